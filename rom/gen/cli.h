@@ -1,0 +1,66 @@
+// cli.h - strict parsing of command-line values, shared by specrom and specsim.
+// Every failure throws UsageError with a one-line message; the programs print it and exit 2.
+#pragma once
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace spec {
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+inline long long parse_int(const std::string& flag, const std::string& s, long long lo, long long hi) {
+    if (s.empty()) throw UsageError(flag + ": missing value");
+    errno = 0;
+    char* end = nullptr;
+    long long v = std::strtoll(s.c_str(), &end, 0);
+    if (errno == ERANGE || end == s.c_str() || *end != '\0') {
+        throw UsageError(flag + ": '" + s + "' is not an integer");
+    }
+    if (v < lo || v > hi) {
+        throw UsageError(flag + ": " + s + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+    }
+    return v;
+}
+
+inline double parse_double(const std::string& flag, const std::string& s) {
+    if (s.empty()) throw UsageError(flag + ": missing value");
+    errno = 0;
+    char* end = nullptr;
+    double v = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0') throw UsageError(flag + ": '" + s + "' is not a number");
+    if (!std::isfinite(v) || errno == ERANGE) throw UsageError(flag + ": '" + s + "' is not a finite number");
+    return v;
+}
+
+// Walks argv as "--flag value" pairs (and bare "--switch"es the caller names).
+class Args {
+public:
+    Args(int argc, char** argv, int first) : argc_(argc), argv_(argv), i_(first) {}
+    bool done() const { return i_ >= argc_; }
+    std::string flag() {
+        std::string f = argv_[i_++];
+        if (f.rfind("--", 0) != 0) throw UsageError("unexpected argument '" + f + "'");
+        return f;
+    }
+    std::string value(const std::string& flag) {
+        if (i_ >= argc_) throw UsageError(flag + ": missing value");
+        std::string v = argv_[i_++];
+        if (v.rfind("--", 0) == 0 && !(v.size() > 2 && (std::isdigit(static_cast<unsigned char>(v[2])) || v[2] == '.'))) {
+            throw UsageError(flag + ": missing value");
+        }
+        return v;
+    }
+
+private:
+    int argc_;
+    char** argv_;
+    int i_;
+};
+
+}  // namespace spec

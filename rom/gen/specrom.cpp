@@ -1,0 +1,49 @@
+// specrom - writes the $readmemh images of ROM 9 and ROM 12 and the headers spec_params.vh / spec_params.h.
+//
+//   specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
+//           [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]
+//
+// With no options it writes the default images (the ones committed in rom/) into the current directory.
+// Bad input: a one-line message on stderr and exit code 2; nothing is written.
+#include <iostream>
+
+#include "cli.h"
+#include "romgen.h"
+
+int main(int argc, char** argv) {
+    using namespace spec;
+    try {
+        Format f;
+        std::string out = ".";
+        Args a(argc, argv, 1);
+        while (!a.done()) {
+            std::string fl = a.flag();
+            if (fl == "--help" || fl == "-h") {
+                std::cout << "usage: specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
+                             "               [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]\n"
+                             "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n";
+                return 0;
+            }
+            if (fl == "--out") { out = a.value(fl); continue; }
+            int* field = fl == "--tbl-aw"       ? &f.tbl_aw
+                         : fl == "--tbl-frac"   ? &f.tbl_frac
+                         : fl == "--scale-w"    ? &f.scale_w
+                         : fl == "--scale-frac" ? &f.scale_frac
+                         : fl == "--c-w"        ? &f.c_w
+                         : fl == "--ang-w"      ? &f.ang_w
+                         : fl == "--ang-frac"   ? &f.ang_frac
+                         : fl == "--n-w"        ? &f.n_w
+                         : fl == "--l-w"        ? &f.l_w
+                                                : nullptr;
+            if (!field) throw UsageError("unknown option " + fl);
+            *field = static_cast<int>(parse_int(fl, a.value(fl), 0, 64));
+            if (fl == "--c-w") f.out_w = f.c_w;
+        }
+        f.validate();
+        write_all(f, out);
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "specrom: " << e.what() << "\n";
+        return 2;
+    }
+}

@@ -1,0 +1,39 @@
+// spec_mul13 - multiplier 13 ("first multiplier") of UA 71489 Fig. 1: C (register 1) x ROM 12 -> output 27.
+// out = round(C * table / 2^SHIFT), 0 when `zero`. With OUT_W = C_W and SHIFT = TBL_FRAC, table = 1.0
+// gives C exactly and the result never exceeds 2^OUT_W - 1. Registered output, written when `en`,
+// so output 27 holds the last pixel between pixels; cleared by the synchronous reset.
+`timescale 1ns / 1ps
+`default_nettype none
+module spec_mul13 #(
+    parameter C_W = 16,
+    parameter TBL_DW = 17,
+    parameter OUT_W = 16,
+    parameter SHIFT = 16
+) (
+    input  wire              clk,
+    input  wire              rst,
+    input  wire              en,
+    input  wire [C_W-1:0]    c,
+    input  wire [TBL_DW-1:0] value,
+    input  wire              zero,
+    output reg  [OUT_W-1:0]  out
+);
+    localparam PW = C_W + TBL_DW;
+    wire [TBL_DW-1:0] v = zero ? {TBL_DW{1'b0}} : value;
+    wire [PW-1:0] prod = {{TBL_DW{1'b0}}, c} * {{C_W{1'b0}}, v};
+    wire [PW-1:0] rounded = prod + ({{(PW - 1) {1'b0}}, 1'b1} << (SHIFT - 1));
+    wire unused_bits;
+    generate
+        if (SHIFT + OUT_W < PW) begin : g_top
+            assign unused_bits = &{1'b0, rounded[SHIFT-1:0], rounded[PW-1:SHIFT+OUT_W]};
+        end else begin : g_notop
+            assign unused_bits = &{1'b0, rounded[SHIFT-1:0]};
+        end
+    endgenerate
+
+    always @(posedge clk) begin
+        if (rst) out <= {OUT_W{1'b0}};
+        else if (en) out <= rounded[SHIFT+OUT_W-1:SHIFT];
+    end
+endmodule
+`default_nettype wire

@@ -1,0 +1,136 @@
+// spec_unit - the device of UA 71489 (Romanyuk & Chornyi, 2004), Fig. 1: intensity of the specular
+// component C * cos^k(sqrt(n/k) * angle) along a scanline, one pixel per two clocks.
+//
+// Reference numerals in comments are the patent's. Formats (defaults from rom/spec_params.vh):
+//   C      UQ0.C_W                         register 1 (inputs 15, 16)
+//   dzeta  two's complement, ANG_FRAC bits  register 2 (inputs 17, 18), angle step in radians
+//   zeta0  same format                      register 3 (inputs 19, 20), start angle (unscaled: -lambda)
+//   n      0 .. 2^N_W - 1                   register 4 (inputs 21, 22)
+//   l      0 .. 2^L_W - 1 intervals         counter 5 (inputs 23, 24): l + 1 pixels
+//   out    UQ0.OUT_W                        output 27
+// Timing (see docs/interface.md): with Start in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
+// is in cycle t + 6 + 2i; busy_o falls in the cycle after the last valid_o. Start, register writes and
+// counter loads are ignored while busy_o is 1; init_n = 0 at a clock edge returns to idle (busy_o = 0,
+// valid_o = 0 from the next cycle) and clears every register.
+`timescale 1ns / 1ps
+`default_nettype none
+`include "spec_params.vh"
+module spec_unit #(
+    parameter C_W = `SPEC_C_W,
+    parameter ANG_W = `SPEC_ANG_W,
+    parameter ANG_FRAC = `SPEC_ANG_FRAC,
+    parameter N_W = `SPEC_N_W,
+    parameter L_W = `SPEC_L_W,
+    parameter OUT_W = `SPEC_OUT_W,
+    parameter SCALE_W = `SPEC_SCALE_W,
+    parameter SCALE_FRAC = `SPEC_SCALE_FRAC,
+    parameter TBL_AW = `SPEC_TBL_AW,
+    parameter TBL_FRAC = `SPEC_TBL_FRAC,
+    parameter ROM9_FILE = `SPEC_ROM9_FILE,
+    parameter ROM12_FILE = `SPEC_ROM12_FILE
+) (
+    input  wire             clk,
+    input  wire             init_n,      // 25  initial set, active low (synchronous)
+    input  wire             start,       // 26  "Start"
+    input  wire [C_W-1:0]   c_i,         // 15  C
+    input  wire             c_we,        // 16
+    input  wire [ANG_W-1:0] dzeta_i,     // 17  angle step
+    input  wire             dzeta_we,    // 18
+    input  wire [ANG_W-1:0] zeta0_i,     // 19  start angle
+    input  wire             zeta0_we,    // 20
+    input  wire [N_W-1:0]   n_i,         // 21  exponent n
+    input  wire             n_we,        // 22
+    input  wire [L_W-1:0]   len_i,       // 23  intervals l
+    input  wire             len_load_n,  // 24  load counter 5, active low
+    output wire [OUT_W-1:0] intensity_o, // 27  intensity
+    output wire             busy_o,      // 28  "End": 1 while the span is computed
+    output wire             valid_o      // 29  data valid
+);
+    localparam TBL_DW = TBL_FRAC + 1;
+    localparam PROD_FRAC = ANG_FRAC + SCALE_FRAC;
+
+    wire rst = ~init_n;
+    wire idle = ~busy_o;
+
+    // Control block 14 and its signals (public for the Fig. 11 trace of the Verilator harness).
+    wire sig28 /*verilator public_flat_rd*/;
+    wire sig34 /*verilator public_flat_rd*/;
+    wire sig35 /*verilator public_flat_rd*/;   // borrow, active low
+    wire sig36 /*verilator public_flat_rd*/;
+    wire sig37 /*verilator public_flat_rd*/;
+    wire d30 /*verilator public_flat_rd*/;
+    wire d31 /*verilator public_flat_rd*/;
+    wire d32 /*verilator public_flat_rd*/;
+    wire d33 /*verilator public_flat_rd*/;
+
+    // Strobe 37 delayed through the pipeline: [0] register 8 holds the pixel's angle, [1] multiplier 11's
+    // register, [2] ROM 12's read register, [3] multiplier 13's register = output 27 (data valid 29).
+    reg [3:0] vpipe;
+    always @(posedge clk) begin
+        if (rst) vpipe <= 4'b0000;
+        else vpipe <= {vpipe[2:0], sig37};
+    end
+    assign valid_o = vpipe[3];
+    assign busy_o = sig28 | (|vpipe);
+
+    // Registers 1..4
+    wire [C_W-1:0] c_q;
+    wire [ANG_W-1:0] dzeta_q, zeta0_q;
+    wire [N_W-1:0] n_q;
+    spec_reg #(.W(C_W))   u_reg1 (.clk(clk), .rst(rst), .we(c_we & idle),     .d(c_i),     .q(c_q));
+    spec_reg #(.W(ANG_W)) u_reg2 (.clk(clk), .rst(rst), .we(dzeta_we & idle), .d(dzeta_i), .q(dzeta_q));
+    spec_reg #(.W(ANG_W)) u_reg3 (.clk(clk), .rst(rst), .we(zeta0_we & idle), .d(zeta0_i), .q(zeta0_q));
+    spec_reg #(.W(N_W))   u_reg4 (.clk(clk), .rst(rst), .we(n_we & idle),     .d(n_i),     .q(n_q));
+
+    // Down-counter 5
+    wire [L_W-1:0] count_q;
+    spec_counter #(.W(L_W)) u_cnt5 (
+        .clk(clk), .rst(rst), .load_n(len_load_n | busy_o), .d(len_i),
+        .count(sig34), .q(count_q), .borrow_n(sig35)
+    );
+    wire unused_count;
+    assign unused_count = &{1'b0, count_q};
+
+    // Control block 14
+    spec_ctrl u_ctrl14 (
+        .clk(clk), .init_n(init_n), .start(start & idle), .borrow_n(sig35),
+        .sig28(sig28), .sig34(sig34), .sig36(sig36), .sig37(sig37)
+    );
+
+    // Accumulating adder: adder 6, multiplexer 7, register 8
+    wire [ANG_W-1:0] angle8;
+    spec_accum #(.W(ANG_W)) u_acc678 (
+        .clk(clk), .rst(rst), .we(sig37), .sel(sig36), .start(zeta0_q), .step(dzeta_q), .angle(angle8)
+    );
+
+    // ROM 9 and decoder 10 (both follow register 4; ROM 9 one clock later, ready long before the first pixel)
+    wire [SCALE_W-1:0] scale9;
+    spec_rom9 #(.N_W(N_W), .SCALE_W(SCALE_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
+        .clk(clk), .n(n_q), .scale(scale9)
+    );
+    wire [1:0] table_sel;
+    spec_decoder #(.N_W(N_W)) u_dec10 (
+        .n(n_q), .d30(d30), .d31(d31), .d32(d32), .d33(d33), .table_sel(table_sel)
+    );
+
+    // Multiplier 11
+    wire [TBL_AW-1:0] index11;
+    wire zero11;
+    spec_mul11 #(.ANG_W(ANG_W), .SCALE_W(SCALE_W), .PROD_FRAC(PROD_FRAC), .TBL_AW(TBL_AW)) u_mul11 (
+        .clk(clk), .en(1'b1), .angle(angle8), .scale(scale9), .index(index11), .zero(zero11)
+    );
+
+    // ROM 12 (the zero flag travels beside its read register)
+    wire [TBL_DW-1:0] value12;
+    reg zero12;
+    always @(posedge clk) zero12 <= zero11;
+    spec_rom12 #(.TBL_AW(TBL_AW), .TBL_DW(TBL_DW), .INIT_FILE(ROM12_FILE)) u_rom12 (
+        .clk(clk), .en(1'b1), .table_sel(table_sel), .index(index11), .value(value12)
+    );
+
+    // Multiplier 13 -> output 27
+    spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W)) u_mul13 (
+        .clk(clk), .rst(rst), .en(vpipe[2]), .c(c_q), .value(value12), .zero(zero12), .out(intensity_o)
+    );
+endmodule
+`default_nettype wire

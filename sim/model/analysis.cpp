@@ -1,0 +1,163 @@
+#include "analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include "spec_format.h"
+
+namespace spec {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// Maximum of a continuous function on [lo, hi]: dense sampling, then golden-section search
+// in the bracket around the best sample.
+double maximize(const std::function<double(double)>& f, double lo, double hi, int samples = 1024) {
+    double best = -1.0;
+    int bi = 0;
+    for (int i = 0; i <= samples; ++i) {
+        double x = lo + (hi - lo) * i / samples;
+        double v = f(x);
+        if (v > best) {
+            best = v;
+            bi = i;
+        }
+    }
+    double a = lo + (hi - lo) * std::max(0, bi - 1) / samples;
+    double b = lo + (hi - lo) * std::min(samples, bi + 1) / samples;
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    double fc = f(c), fd = f(d);
+    for (int it = 0; it < 60; ++it) {
+        if (fc > fd) {
+            b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
+        } else {
+            a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
+        }
+    }
+    return std::max({best, fc, fd});
+}
+}  // namespace
+
+double epicentre_end(unsigned n) {
+    if (n == 0) return kPi / 2.0;
+    if (n == 1) return kPi / 3.0;
+    return std::atan(1.0 / std::sqrt(static_cast<double>(n) - 1.0));
+}
+
+double approx(unsigned n, int k, double d) {
+    if (n == 0) return 1.0;
+    const double z = std::sqrt(static_cast<double>(n) / k) * std::fabs(d);
+    if (z >= kPi / 2.0) return 0.0;
+    return std::pow(std::cos(z), k);
+}
+
+double q_error(unsigned n, int k) {
+    if (n == 0) return 0.0;
+    return maximize(
+        [&](double d) {
+            const double ref = std::pow(std::cos(d), static_cast<double>(n));
+            return std::fabs(approx(n, k, d) - ref) / ref;
+        },
+        0.0, epicentre_end(n));
+}
+
+double a_error(unsigned n, int k) {
+    if (n == 0) return 0.0;
+    return maximize(
+        [&](double d) { return std::fabs(approx(n, k, d) - std::pow(std::cos(d), static_cast<double>(n))); },
+        0.0, kPi / 2.0, 4096);
+}
+
+const ErrorTable& fig10_errors() {
+    static const ErrorTable t = [] {
+        ErrorTable e;
+        for (unsigned n = 0; n < 1024; ++n) {
+            e.q.push_back(q_error(n, k_of_n(n)));
+            e.a.push_back(a_error(n, k_of_n(n)));
+        }
+        return e;
+    }();
+    return t;
+}
+
+std::vector<Fig8Row> fig8(double limit) {
+    std::vector<Fig8Row> rows;
+    for (int k = 1; k <= 16; ++k) {
+        Fig8Row r{k, 0, 0, true, 0};
+        int last = 0;
+        for (int n = 1; n <= 1000; ++n) {
+            if (q_error(unsigned(n), k) <= limit) {
+                if (r.count == 0) r.n_lo = n;
+                else if (n != last + 1) r.contiguous = false;
+                r.n_hi = n;
+                last = n;
+                ++r.count;
+            }
+        }
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+std::string fig8_report(bool all_n) {
+    static const char* patent[17] = {"",      "1",      "2",       "3..4",    "3..6",    "4..10",
+                                     "4..17", "5..33",  "5..105",  "6..1000", "6..1000", "6..1000",
+                                     "6..1000", "6..1000", "6..1000", "6..1000", "7..1000"};
+    std::ostringstream o;
+    char buf[256];
+    o << "Fig. 8 recomputed: n in 1..1000 for which cos^k(sqrt(n/k) d) stays within 1 % of cos^n(d)\n"
+      << "over the epicentre [0, atan(1/sqrt(n-1))] (n = 1: [0, pi/3]), double precision.\n\n"
+      << "   k | n with q <= 1 % (computed) | patent Fig. 8\n"
+      << "-----+----------------------------+--------------\n";
+    for (const auto& r : fig8(0.01)) {
+        std::string range = r.count == 0 ? "none"
+                                         : std::to_string(r.n_lo) + ".." + std::to_string(r.n_hi) +
+                                               (r.contiguous ? "" : " (with gaps)");
+        std::snprintf(buf, sizeof buf, "  %2d | %-26s | %s\n", r.k, range.c_str(), patent[r.k]);
+        o << buf;
+    }
+    const ErrorTable& e = fig10_errors();
+    struct Range {
+        const char* name;
+        unsigned lo, hi;
+    } ranges[] = {{"n = 1      (k = 1)", 1, 1},       {"n = 2      (k = 2)", 2, 2},
+                  {"n = 3..6   (k = 4)", 3, 6},       {"n = 7..1000 (k = 16)", 7, 1000},
+                  {"n = 1001..1023 (k = 16)", 1001, 1023}, {"n = 1..1000 (all)", 1, 1000}};
+    o << "\nFig. 10 rule (k = 1, 2, 4, 16): worst errors per BRDF range\n"
+      << "  range                    | q(n) max rel. in epicentre (at n) | a(n) max abs. on [0, pi/2] (at n)\n"
+      << "  -------------------------+-----------------------------------+----------------------------------\n";
+    for (const auto& r : ranges) {
+        unsigned qn = r.lo, an = r.lo;
+        for (unsigned n = r.lo; n <= r.hi; ++n) {
+            if (e.q[n] > e.q[qn]) qn = n;
+            if (e.a[n] > e.a[an]) an = n;
+        }
+        std::snprintf(buf, sizeof buf, "  %-24s | %8.4f %%  (n = %4u)             | %8.4f %%  (n = %4u)\n", r.name,
+                      100.0 * e.q[qn], qn, 100.0 * e.a[an], an);
+        o << buf;
+    }
+    unsigned over = 0;
+    for (unsigned n = 1; n <= 1000; ++n) over += e.q[n] > 0.01;
+    unsigned worst6 = 6;
+    for (unsigned n = 6; n <= 1000; ++n) if (e.q[n] > e.q[worst6]) worst6 = n;
+    std::snprintf(buf, sizeof buf,
+                  "\nPatent's claims: q <= 1 %% for n = 1..1000 -> %u value(s) of n exceed 1 %%;\n"
+                  "                 q <= 0.6 %% for n >= 6    -> worst for n >= 6 is %.4f %% at n = %u.\n",
+                  over, 100.0 * e.q[worst6], worst6);
+    o << buf;
+    if (all_n) {
+        o << "\n   n   k   q(n) %     a(n) %   epicentre end (rad)\n";
+        for (unsigned n = 0; n < 1024; ++n) {
+            std::snprintf(buf, sizeof buf, "%4u %3d %9.5f %9.5f %10.6f\n", n, k_of_n(n), 100.0 * e.q[n],
+                          100.0 * e.a[n], epicentre_end(n));
+            o << buf;
+        }
+    }
+    return o.str();
+}
+
+}  // namespace spec

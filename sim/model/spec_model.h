@@ -1,0 +1,71 @@
+// spec_model.h - bit-exact C++ model of spec_unit's datapath and pixel sequence.
+//
+// Every step is the integer operation of the RTL block named in the comment; the tables come from the
+// same generator functions that write the ROM images (rom/gen/romgen.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "spec_format.h"
+
+namespace spec {
+
+// Raw register contents, as written through spec_unit's ports.
+struct SpanRegs {
+    uint32_t c = 0;       // register 1, UQ0.c_w
+    int64_t dzeta = 0;    // register 2, signed, ang_frac fraction bits
+    int64_t zeta0 = 0;    // register 3, signed, ang_frac fraction bits
+    uint32_t n = 0;       // register 4
+    uint32_t len = 0;     // counter 5: intervals l
+};
+
+// Multiplier 11's registered result: position in ROM 12 and the "past pi/2" flag.
+struct TablePos {
+    uint32_t index = 0;   // tbl_aw bits
+    bool zero = false;    // |sqrt(n/k) * angle| >= pi/2 (after rounding to the table grid)
+};
+
+class Model {
+public:
+    explicit Model(const Format& f = Format());
+
+    const Format& format() const { return f_; }
+
+    // Adder 6 with register 8: saturating two's complement addition in ang_w bits.
+    int64_t accumulate(int64_t angle, int64_t dzeta) const;
+    // Multiplier 11 on |angle| and ROM 9's word for n.
+    TablePos mul11(int64_t angle, unsigned n) const;
+    // ROM 12 read, decoder 10 choosing the table.
+    uint32_t rom12(unsigned n, const TablePos& p) const;
+    // Multiplier 13: round(C * table / 2^mul13_shift), 0 when the position is past pi/2.
+    uint32_t mul13(uint32_t c, uint32_t table, bool zero) const;
+    // The whole datapath after register 8.
+    uint32_t pixel(uint32_t c, int64_t angle, unsigned n) const;
+    // The l + 1 pixels of one span, in order.
+    std::vector<uint32_t> span(const SpanRegs& r) const;
+    // Register 8's value for pixel i of the span (with saturation).
+    std::vector<int64_t> angles(const SpanRegs& r) const;
+
+    uint32_t rom9_word(unsigned n) const { return rom9_.at(n); }
+    const std::vector<uint32_t>& rom9() const { return rom9_; }
+    const std::vector<uint32_t>& rom12() const { return rom12_; }
+
+    // Host-side quantization (what specsim does before writing the registers).
+    int64_t angle_min() const { return -(int64_t(1) << (f_.ang_w - 1)); }
+    int64_t angle_max() const { return (int64_t(1) << (f_.ang_w - 1)) - 1; }
+    // Round to nearest; throws std::out_of_range when the value does not fit the format.
+    int64_t quantize_angle(double radians) const;
+    // Round to nearest UQ0.c_w; throws std::out_of_range outside [0, 1). 1 - 2^-(c_w+1) <= C < 1 gives the
+    // largest code (2^c_w - 1).
+    uint32_t quantize_c(double c) const;
+    double angle_value(int64_t raw) const;
+    double out_value(uint32_t raw) const;
+
+private:
+    Format f_;
+    std::vector<uint32_t> rom9_;
+    std::vector<uint32_t> rom12_;
+};
+
+}  // namespace spec

@@ -1,0 +1,63 @@
+// unit_driver.h - drives the Verilated spec_unit through its ports, as an external device would.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spec_model.h"
+
+class Vspec_unit;
+class VerilatedContext;
+class VerilatedVcdC;
+
+namespace spec {
+
+// The control signals of Fig. 11, read from inside the core each cycle (public signals).
+struct CtrlSignals {
+    bool s28, s29, s34, s35_n, s36, s37;
+    bool d30, d31, d32, d33;
+    bool busy, valid;
+    uint32_t intensity;
+};
+
+class UnitDriver {
+public:
+    // vcd_path: write a waveform of everything that follows (empty: none).
+    explicit UnitDriver(const std::string& vcd_path = "");
+    ~UnitDriver();
+    UnitDriver(const UnitDriver&) = delete;
+    UnitDriver& operator=(const UnitDriver&) = delete;
+
+    Vspec_unit& top() { return *top_; }
+    // One clock: the inputs as set now are sampled at the rising edge; afterwards the outputs show the
+    // next cycle. Every input is returned to its idle value (strobes 0, init_n 1, len_load_n 1) after it.
+    void step();
+    void steps(int n) { for (int i = 0; i < n; ++i) step(); }
+    // init_n low for one clock.
+    void init();
+    // Writes registers 1..4 and loads counter 5 in one clock (all strobes together).
+    void write(const SpanRegs& r);
+    // Pulses Start and collects the pixels until busy_o falls (at most max_cycles clocks).
+    // Throws std::runtime_error on a timeout.
+    std::vector<uint32_t> run(uint64_t max_cycles = 0);
+    // write() then run().
+    std::vector<uint32_t> span(const SpanRegs& r) { write(r); return run(); }
+
+    CtrlSignals signals() const;
+    uint64_t cycle() const { return cycle_; }
+    // Called after every step() with the signals of the new cycle.
+    std::function<void(uint64_t cycle, const CtrlSignals&)> observer;
+
+private:
+    void idle_inputs();
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<Vspec_unit> top_;
+    std::unique_ptr<VerilatedVcdC> vcd_;
+    uint64_t cycle_ = 0;
+    uint64_t time_ = 0;
+};
+
+}  // namespace spec

@@ -1,0 +1,1 @@
+void vmodules_anchor() {}

@@ -1,0 +1,129 @@
+// specsim as a user runs it: output format, model agreement, and bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+struct Result {
+    int code;
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+
+Result run(const std::string& args) {
+    const std::string errfile = ::testing::TempDir() + "/specsim_err.txt";
+    const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + errfile + " </dev/null";
+    Result r;
+    FILE* p = popen(cmd.c_str(), "r");
+    char buf[4096];
+    size_t k;
+    while ((k = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, k);
+    const int st = pclose(p);
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    FILE* e = fopen(errfile.c_str(), "r");
+    while (e && (k = fread(buf, 1, sizeof buf, e)) > 0) r.err.append(buf, k);
+    if (e) fclose(e);
+    return r;
+}
+
+std::vector<std::string> lines(const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream is(s);
+    for (std::string l; std::getline(is, l);) v.push_back(l);
+    return v;
+}
+}  // namespace
+
+TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
+    const char* spans[] = {
+        "--n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3",
+        "--n 0 --c 0.5 --zeta0 1 --dzeta 0.3 --len 5",
+        "--n 1000 --c 0.99 --zeta0 -0.05 --dzeta 0.001 --len 100",
+        "--n 1 --c 0.3 --zeta0 -3 --dzeta 0.06 --len 100",
+        "--n 3 --c 0.123 --zeta0 7.9 --dzeta -1.9 --len 8",
+    };
+    for (const char* s : spans) {
+        Result rtl = run(std::string("span ") + s);
+        Result gold = run(std::string("span ") + s + " --model golden");
+        ASSERT_EQ(rtl.code, 0) << rtl.err;
+        ASSERT_EQ(gold.code, 0) << gold.err;
+        EXPECT_EQ(rtl.out, gold.out) << s;
+        auto l = lines(rtl.out);
+        ASSERT_GE(l.size(), 2u);
+        EXPECT_EQ(l[0], "i,value");
+        for (size_t i = 1; i < l.size(); ++i) {
+            const auto comma = l[i].find(',');
+            ASSERT_NE(comma, std::string::npos);
+            EXPECT_EQ(std::stoul(l[i].substr(0, comma)), i - 1);
+            const double v = std::stod(l[i].substr(comma + 1));
+            EXPECT_GE(v, 0.0);
+            EXPECT_LT(v, 1.0);
+        }
+    }
+    Result r = run("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3");
+    EXPECT_EQ(lines(r.out).size(), 5u) << "header and l + 1 rows";
+}
+
+TEST(Specsim, RefIsDoublePrecisionBlinnPhong) {
+    Result r = run("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3 --model ref");
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto l = lines(r.out);
+    ASSERT_EQ(l.size(), 5u);
+    for (int i = 0; i < 4; ++i) {
+        const double ang = -0.15 + 0.1 * i;
+        const double v = std::stod(l[i + 1].substr(l[i + 1].find(',') + 1));
+        EXPECT_NEAR(v, 0.75 * std::pow(std::cos(ang), 10), 1e-15);
+    }
+    Result back = run("span --n 5 --c 0.5 --zeta0 2 --dzeta 0.5 --len 1 --model ref");
+    EXPECT_NE(back.out.find("1,0.0000000000000000"), std::string::npos) << "max(0, cos) past pi/2";
+}
+
+TEST(Specsim, BadInputGetsOneLineAndExitCode2) {
+    const std::string ok = "--c 0.5 --zeta0 0 --dzeta 0.1 --len 3";
+    const char* bad[] = {
+        "span --n 1024 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n -1 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 1.5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c 1.0 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c -0.1 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c nan --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c 0.5 --zeta0 inf --dzeta 0.1 --len 3",
+        "span --n 5 --c 0.5 --zeta0 8 --dzeta 0.1 --len 3",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 65536",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len -1",
+        "span --n 5 --c 0.5 --zeta0 7 --dzeta 0.5 --len 3",   // last angle 8.5 leaves the format
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3 --model fast",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3 --frobnicate 1",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len",
+        "span --n --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c abc --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3 extra",
+        "frobnicate",
+        "",
+        "vectors --spans 3",
+    };
+    for (const char* b : bad) {
+        Result r = run(b);
+        EXPECT_EQ(r.code, 2) << b;
+        EXPECT_TRUE(r.out.empty()) << b << ": " << r.out;
+        auto l = lines(r.err);
+        EXPECT_EQ(l.size(), 1u) << b << ": " << r.err;
+        if (!l.empty()) EXPECT_EQ(l[0].rfind("specsim: ", 0), 0u) << l[0];
+    }
+    EXPECT_EQ(run("span --n 5 " + ok).code, 0);
+    EXPECT_EQ(run("span --n 5 --c 0.5 --zeta0 -8 --dzeta 0 --len 3").code, 0) << "-8 is the format's minimum";
+}
+
+TEST(Specsim, Fig8PrintsTheRecomputedTable) {
+    Result r = run("fig8");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("Fig. 8 recomputed"), std::string::npos);
+    EXPECT_NE(r.out.find("n = 3..6"), std::string::npos);
+    EXPECT_EQ(lines(r.out).size() > 20, true);
+}
