@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -42,6 +43,10 @@ const char* kUsage =
     "  demo     the Fig. 11/12 span and representative spans through the RTL beside the double reference\n"
     "           --vcd FILE      waveform of the Fig. 11 run\n"
     "           --diagram FILE  text timing diagram of the Fig. 11 run\n"
+    "  accuracy the core's worst error per BRDF range against double precision, every n, beside the\n"
+    "           approximation's own error (q, a) and the patent's claims\n"
+    "           --model golden|rtl (default golden; equal bit for bit)  --points P (100..100000, default 4000)\n"
+    "           --tbl-aw N   (golden only) model a ROM 12 of 2^N positions per table instead of the default\n"
     "  vectors  test vectors from the bit-exact model for the Icarus testbench\n"
     "           --out FILE --spans N (1..5000, default 200) --seed S\n";
 
@@ -182,31 +187,27 @@ int cmd_demo(int argc, char** argv) {
         s.c = 0.75; s.zeta0 = -0.15; s.dzeta = 0.1;
         s.regs = SpanRegs{m.quantize_c(s.c), m.quantize_angle(s.dzeta), m.quantize_angle(s.zeta0), 10, 3};
         UnitDriver d(vcd);
-        std::vector<std::vector<bool>> rows(9);
-        std::vector<std::string> out_row;
         d.steps(2);
         d.write(s.regs);
-        d.observer = [&](uint64_t, const CtrlSignals& c) {
-            rows[1].push_back(c.s28); rows[2].push_back(c.s37); rows[3].push_back(c.s36);
-            rows[4].push_back(c.s34); rows[5].push_back(c.s35_n); rows[6].push_back(c.busy);
-            rows[7].push_back(c.valid);
+        // rows: start, 28 (ff39), 37, 36, 34, 35, busy_o, valid_o; column 0 = the cycle Start is applied
+        std::vector<std::vector<bool>> rows(8);
+        auto record = [&](bool start, const CtrlSignals& c) {
+            const bool v[8] = {start, c.s28, c.s37, c.s36, c.s34, c.s35_n, c.busy, c.valid};
+            for (int r = 0; r < 8; ++r) rows[r].push_back(v[r]);
         };
-        rows[0].push_back(false);  // start is drawn from the cycle it is applied in
+        record(true, d.signals());
+        d.observer = [&](uint64_t, const CtrlSignals& c) { record(false, c); };
         auto px = d.run();
         d.steps(3);
-        // "start" row: high in the first cycle only (the cycle the driver applied it)
-        const size_t ncyc = rows[1].size() + 1;
-        rows[0].assign(ncyc, false);
-        rows[0][0] = true;
-        for (int r = 1; r <= 7; ++r) rows[r].insert(rows[r].begin(), false);
+        const size_t ncyc = rows[0].size();
         std::ostringstream t;
         t << "Fig. 11 run (l = 3, n = 10, C = 0.75, zeta0 = -0.15, dzeta = 0.1), one character per clock,\n"
           << "cycle 0 = the cycle Start is high; from the Verilated spec_unit (specsim demo --diagram)\n\n";
-        const char* names[] = {"start      26", "ff39       28", "strobe     37", "select     36",
-                               "count      34", "borrow_n   35", "busy_o     28", "valid_o    29"};
+        const char* names[] = {"start      26 ", "ff39       28 ", "strobe     37 ", "select     36 ",
+                               "count      34 ", "borrow_n   35 ", "busy_o     28 ", "valid_o    29 "};
         std::string ruler;
         for (size_t c = 0; c < ncyc; ++c) ruler += (c % 5 == 0) ? std::to_string(c % 10) : " ";
-        t << "             " << ruler << "\n";
+        t << "              " << ruler << "\n";
         for (int r = 0; r < 8; ++r) t << names[r] << wave(rows[r]) << "\n";
         t << "\npixels (valid_o): ";
         for (size_t i = 0; i < px.size(); ++i) t << (i ? ", " : "") << fmt_out(f, px[i]);
@@ -238,6 +239,83 @@ int cmd_demo(int argc, char** argv) {
                         std::ldexp(out - ref, f.out_w), std::fabs(ang) <= e ? "yes" : "no");
         }
     }
+    return 0;
+}
+
+// The fixed-point core against double precision: for every n, one span from angle 0 to pi/2 (P + 1
+// pixels, C = 1 - 2^-16) through the bit-exact model or the RTL; ref = C * cos(angle)^n at the angle the
+// core holds in register 8.
+int cmd_accuracy(int argc, char** argv) {
+    std::string model = "golden";
+    long long points = 4000;
+    Format fmt;
+    Args a(argc, argv, 2);
+    while (!a.done()) {
+        std::string fl = a.flag();
+        if (fl == "--model") {
+            model = a.value(fl);
+            if (model != "golden" && model != "rtl") throw UsageError("--model: '" + model + "' is not golden or rtl");
+        } else if (fl == "--points") {
+            points = parse_int(fl, a.value(fl), 100, 100000);
+        } else if (fl == "--tbl-aw") {
+            fmt.tbl_aw = static_cast<int>(parse_int(fl, a.value(fl), 4, 16));
+        } else {
+            throw UsageError("accuracy: unknown option " + fl);
+        }
+    }
+    if (model == "rtl" && fmt.tbl_aw != Format().tbl_aw) throw UsageError("--tbl-aw: only with --model golden");
+    const Model m(fmt);
+    const Format& f = m.format();
+    const ErrorTable& e = fig10_errors();
+    std::unique_ptr<UnitDriver> d;
+    if (model == "rtl") d.reset(new UnitDriver);
+    const uint32_t craw = (1u << f.c_w) - 1;
+    const double c = std::ldexp(double(craw), -f.c_w);
+    std::vector<double> rel_in(1024, 0.0), abs_all(1024, 0.0);
+    for (unsigned n = 0; n < 1024; ++n) {
+        SpanRegs r{craw, m.quantize_angle((M_PI / 2) / double(points)), 0, n, static_cast<uint32_t>(points)};
+        const std::vector<uint32_t> px = d ? d->span(r) : m.span(r);
+        const std::vector<int64_t> ang = m.angles(r);
+        for (size_t i = 0; i < px.size(); ++i) {
+            const double x = m.angle_value(ang[i]);
+            const double ref = c * std::pow(std::max(0.0, std::cos(x)), double(n));
+            const double err = std::fabs(m.out_value(px[i]) - ref);
+            abs_all[n] = std::max(abs_all[n], err / c);
+            if (x <= epicentre_end(n)) rel_in[n] = std::max(rel_in[n], err / ref);
+        }
+    }
+    struct Range {
+        const char* name;
+        unsigned lo, hi;
+        const char* claim;
+    } ranges[] = {{"n = 1 (cos)", 1, 1, "<= 1 %"},          {"n = 2 (cos^2)", 2, 2, "<= 1 %"},
+                  {"n = 3..6 (cos^4)", 3, 6, "<= 1 %"},      {"n = 7..1000 (cos^16)", 7, 1000, "<= 1 %, <= 0.6 % (n >= 6)"},
+                  {"n = 1001..1023 (cos^16)", 1001, 1023, "-"}, {"n = 0 (C)", 0, 0, "-"}};
+    std::printf("Core (%s model, ROM 12 with 2^%d positions per table, %lld points per n on [0, pi/2], "
+                "C = 1 - 2^-16)\nagainst double precision\n\n",
+                model.c_str(), f.tbl_aw, points);
+    std::printf("| BRDF range | patent's claim | approximation q (double) | core, max rel. error in epicentre |"
+                " approximation a (double) | core, max abs. error / C on [0, pi/2] |\n"
+                "|---|---|---|---|---|---|\n");
+    for (const auto& rg : ranges) {
+        unsigned qn = rg.lo, cn = rg.lo, an = rg.lo, bn = rg.lo;
+        for (unsigned n = rg.lo; n <= rg.hi; ++n) {
+            if (e.q[n] > e.q[qn]) qn = n;
+            if (rel_in[n] > rel_in[cn]) cn = n;
+            if (e.a[n] > e.a[an]) an = n;
+            if (abs_all[n] > abs_all[bn]) bn = n;
+        }
+        std::printf("| %s | %s | %.3f %% (n = %u) | %.3f %% (n = %u) | %.3f %% (n = %u) | %.3f %% (n = %u) |\n",
+                    rg.name, rg.claim, 100 * e.q[qn], qn, 100 * rel_in[cn], cn, 100 * e.a[an], an,
+                    100 * abs_all[bn], bn);
+    }
+    double worst_extra = 0;
+    unsigned wn = 0;
+    for (unsigned n = 0; n < 1024; ++n) {
+        if (rel_in[n] - e.q[n] > worst_extra) { worst_extra = rel_in[n] - e.q[n]; wn = n; }
+    }
+    std::printf("\nFixed point adds at most %.4f %% to the approximation's relative error in the epicentre (n = %u).\n",
+                100 * worst_extra, wn);
     return 0;
 }
 
@@ -293,7 +371,7 @@ int cmd_vectors(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     try {
-        if (argc < 2) throw UsageError("missing command (span, fig8, demo, vectors); see specsim --help");
+        if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
             std::cout << kUsage;
@@ -303,6 +381,7 @@ int main(int argc, char** argv) {
         if (cmd == "fig8") return cmd_fig8(argc, argv);
         if (cmd == "demo") return cmd_demo(argc, argv);
         if (cmd == "vectors") return cmd_vectors(argc, argv);
+        if (cmd == "accuracy") return cmd_accuracy(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
     } catch (const UsageError& e) {
         std::cerr << "specsim: " << e.what() << "\n";

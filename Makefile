@@ -1,0 +1,68 @@
+# Front door of the UA 71489 specular-shading core.
+#   make sim    build everything, run the Fig. 11/12 span and representative spans through the RTL
+#   make test   build, then GoogleTest (Verilator) + Icarus + ROM check via ctest, then lint
+#   make lint   verilator --lint-only -Wall on all RTL, and a Yosys synth_ice40 smoke run
+#   make deps   install the missing Debian packages (sudo when not root)
+#   make roms   regenerate the committed ROM images and headers in rom/
+#   make fig8   print the recomputed Fig. 8 table and q(n), a(n)
+#   make clean  remove build/
+BUILD ?= build
+JOBS ?= 2
+CMAKE_BUILD_TYPE ?= RelWithDebInfo
+RTL := $(wildcard rtl/*.v)
+RTL_TOPS := $(basename $(notdir $(RTL)))
+
+.PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help
+
+all: build
+
+help:
+	@sed -n '2,9p' Makefile | sed 's/^# //'
+
+deps:
+	@scripts/deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE)
+
+configure: $(BUILD)/CMakeCache.txt
+
+build: deps configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+ctest: build
+	cd $(BUILD) && ctest -j$(JOBS) --output-on-failure
+
+test: ctest lint
+	@echo "make test: all tests and lint passed"
+
+lint: deps
+	@echo "verilator --lint-only -Wall:"
+	@for top in $(RTL_TOPS); do \
+	    verilator --lint-only -Wall -Irom -Irtl $(RTL) --top-module $$top || exit 1; \
+	    echo "  $$top: clean"; \
+	done
+	@syn/ice40_smoke.sh $(BUILD)/syn
+
+sim: build
+	@mkdir -p $(BUILD)/sim
+	$(BUILD)/specsim demo --vcd $(BUILD)/sim/fig11.vcd --diagram $(BUILD)/sim/fig11.txt
+	@echo
+	@echo "waveform of the Fig. 11 run: $(BUILD)/sim/fig11.vcd (gtkwave $(BUILD)/sim/fig11.vcd)"
+
+roms: build
+	$(BUILD)/specrom --out rom
+
+fig8: build
+	$(BUILD)/specsim fig8
+
+clean:
+	rm -rf $(BUILD)
+
+# Regenerate the documents made from simulation (checked by the ctest docs_timing_matches_simulation)
+docs: build
+	$(BUILD)/specsim demo --diagram docs/fig11-timing.txt > /dev/null
+	python3 scripts/embed_diagram.py docs/interface.md docs/fig11-timing.txt
+
+accuracy: build
+	$(BUILD)/specsim accuracy

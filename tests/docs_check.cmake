@@ -1,0 +1,18 @@
+# Fails when docs/fig11-timing.txt differs from the diagram the Verilated spec_unit draws now.
+execute_process(COMMAND ${SPECSIM} demo --diagram ${OUT} RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "specsim demo failed (${rc})")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DOC} ${OUT} RESULT_VARIABLE diff)
+if(NOT diff EQUAL 0)
+  message(FATAL_ERROR "docs/fig11-timing.txt differs from the simulation: run 'make docs' and commit")
+endif()
+# docs/interface.md carries the same diagram inline
+if(DEFINED IFACE)
+  file(READ ${OUT} diagram)
+  file(READ ${IFACE} iface)
+  string(FIND "${iface}" "${diagram}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "docs/interface.md does not carry the current Fig. 11 diagram: run 'make docs' and commit")
+  endif()
+endif()
