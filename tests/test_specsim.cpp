@@ -1,6 +1,7 @@
 // specsim as a user runs it: output format, model agreement, and bad input.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,8 @@ struct Result {
 };
 
 Result run(const std::string& args) {
-    const std::string errfile = ::testing::TempDir() + "/specsim_err.txt";
+    // one file per process: ctest runs the tests of this suite in parallel processes
+    const std::string errfile = ::testing::TempDir() + "/specsim_err." + std::to_string(getpid()) + ".txt";
     const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + errfile + " </dev/null";
     Result r;
     FILE* p = popen(cmd.c_str(), "r");
@@ -28,6 +30,7 @@ Result run(const std::string& args) {
     FILE* e = fopen(errfile.c_str(), "r");
     while (e && (k = fread(buf, 1, sizeof buf, e)) > 0) r.err.append(buf, k);
     if (e) fclose(e);
+    std::remove(errfile.c_str());
     return r;
 }
 
