@@ -63,6 +63,7 @@ clean:
 docs: build
 	$(BUILD)/specsim demo --diagram docs/fig11-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/interface.md docs/fig11-timing.txt
+	python3 scripts/embed_diagram.py README.md docs/fig11-timing.txt waves
 
 accuracy: build
 	$(BUILD)/specsim accuracy

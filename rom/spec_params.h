@@ -13,6 +13,9 @@ constexpr int SCALE_W = 18;  // ROM 9 word: sqrt(n/k)*2/pi, unsigned
 constexpr int SCALE_FRAC = 15;  // fraction bits of the ROM 9 word
 constexpr int TBL_AW = 12;  // ROM 12: positions per table = 2^TBL_AW over [0, pi/2)
 constexpr int TBL_FRAC = 16;  // ROM 12 word: UQ1.TBL_FRAC, TBL_FRAC+1 bits
+constexpr int INTERP = 0;  // 1: ROM 12 words carry the step to the next position, interpolated
+constexpr int INTERP_FRAC = 10;  // fraction bits of the position used by the interpolation
+constexpr int DELTA_W = 10;  // width of the step field (with INTERP = 1)
 constexpr int TBL_DW = 17;
 constexpr int ROM9_DEPTH = 1024;
 constexpr int ROM12_DEPTH = 16384;

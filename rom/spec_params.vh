@@ -12,6 +12,9 @@
 `define SPEC_SCALE_FRAC 15  // fraction bits of the ROM 9 word
 `define SPEC_TBL_AW 12  // ROM 12: positions per table = 2^TBL_AW over [0, pi/2)
 `define SPEC_TBL_FRAC 16  // ROM 12 word: UQ1.TBL_FRAC, TBL_FRAC+1 bits
+`define SPEC_INTERP 0  // 1: ROM 12 words carry the step to the next position, interpolated
+`define SPEC_INTERP_FRAC 10  // fraction bits of the position used by the interpolation
+`define SPEC_DELTA_W 10  // width of the step field (with INTERP = 1)
 `define SPEC_ROM9_FILE "rom/rom9_scale.hex"
 `define SPEC_ROM12_FILE "rom/rom12_cosk.hex"
 `endif

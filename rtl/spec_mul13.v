@@ -1,7 +1,9 @@
 // spec_mul13 - multiplier 13 ("first multiplier") of UA 71489 Fig. 1: C (register 1) x ROM 12 -> output 27.
 // out = round(C * table / 2^SHIFT), 0 when `zero`. With OUT_W = C_W and SHIFT = TBL_FRAC, table = 1.0
-// gives C exactly and the result never exceeds 2^OUT_W - 1. Registered output, written when `en`,
-// so output 27 holds the last pixel between pixels; cleared by the synchronous reset.
+// gives C exactly and the result never exceeds 2^OUT_W - 1. The table's top bit (1.0) is only set when the
+// rest is 0, so the product is C x (low TBL_DW-1 bits) plus C shifted: one C_W x (TBL_DW-1) multiplier
+// (a single 16x16 DSP block at the default widths). Registered output, written when `en`, so output 27
+// holds the last pixel between pixels; cleared by the synchronous reset.
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_mul13 #(
@@ -20,8 +22,9 @@ module spec_mul13 #(
 );
     localparam PW = C_W + TBL_DW;
     wire [TBL_DW-1:0] v = zero ? {TBL_DW{1'b0}} : value;
-    wire [PW-1:0] prod = {{TBL_DW{1'b0}}, c} * {{C_W{1'b0}}, v};
-    wire [PW-1:0] rounded = prod + ({{(PW - 1) {1'b0}}, 1'b1} << (SHIFT - 1));
+    wire [PW-1:0] prod_lo = {{TBL_DW{1'b0}}, c} * {{(C_W + 1) {1'b0}}, v[TBL_DW-2:0]};
+    wire [PW-1:0] prod_hi = v[TBL_DW-1] ? {1'b0, c, {(TBL_DW - 1) {1'b0}}} : {PW{1'b0}};
+    wire [PW-1:0] rounded = prod_lo + prod_hi + ({{(PW - 1) {1'b0}}, 1'b1} << (SHIFT - 1));
     wire unused_bits;
     generate
         if (SHIFT + OUT_W < PW) begin : g_top

@@ -1,5 +1,6 @@
 // spec_unit - the device of UA 71489 (Romanyuk & Chornyi, 2004), Fig. 1: intensity of the specular
 // component C * cos^k(sqrt(n/k) * angle) along a scanline, one pixel per two clocks.
+// (spec_stream is the one-pixel-per-clock variant on the same datapath.)
 //
 // Reference numerals in comments are the patent's. Formats (defaults from rom/spec_params.vh):
 //   C      UQ0.C_W                         register 1 (inputs 15, 16)
@@ -9,7 +10,7 @@
 //   l      0 .. 2^L_W - 1 intervals         counter 5 (inputs 23, 24): l + 1 pixels
 //   out    UQ0.OUT_W                        output 27
 // Timing (see docs/interface.md): with Start in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
-// is in cycle t + 6 + 2i; busy_o falls in the cycle after the last valid_o. Start, register writes and
+// is in cycle t + 7 + 2i (t + 8 + 2i with INTERP = 1); busy_o falls in the cycle after the last valid_o. Start, register writes and
 // counter loads are ignored while busy_o is 1; init_n = 0 at a clock edge returns to idle (busy_o = 0,
 // valid_o = 0 from the next cycle) and clears every register.
 `timescale 1ns / 1ps
@@ -26,6 +27,9 @@ module spec_unit #(
     parameter SCALE_FRAC = `SPEC_SCALE_FRAC,
     parameter TBL_AW = `SPEC_TBL_AW,
     parameter TBL_FRAC = `SPEC_TBL_FRAC,
+    parameter INTERP = `SPEC_INTERP,
+    parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
+    parameter DELTA_W = `SPEC_DELTA_W,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE
 ) (
@@ -46,9 +50,6 @@ module spec_unit #(
     output wire             busy_o,      // 28  "End": 1 while the span is computed
     output wire             valid_o      // 29  data valid
 );
-    localparam TBL_DW = TBL_FRAC + 1;
-    localparam PROD_FRAC = ANG_FRAC + SCALE_FRAC;
-
     wire rst = ~init_n;
     wire idle = ~busy_o;
 
@@ -63,15 +64,15 @@ module spec_unit #(
     wire d32 /*verilator public_flat_rd*/;
     wire d33 /*verilator public_flat_rd*/;
 
-    // Strobe 37 delayed through the pipeline: [0] register 8 holds the pixel's angle, [1] multiplier 11's
-    // register, [2] ROM 12's read register, [3] multiplier 13's register = output 27 (data valid 29).
-    reg [3:0] vpipe;
+    // Register 8 holds a fresh pixel angle in the cycle after strobe 37; the datapath (multiplier 11 ->
+    // ROM 12 -> multiplier 13) carries it to output 27 and raises data valid 29 with it.
+    reg fresh8;
     always @(posedge clk) begin
-        if (rst) vpipe <= 4'b0000;
-        else vpipe <= {vpipe[2:0], sig37};
+        if (rst) fresh8 <= 1'b0;
+        else fresh8 <= sig37;
     end
-    assign valid_o = vpipe[3];
-    assign busy_o = sig28 | (|vpipe);
+    wire dp_busy;
+    assign busy_o = sig28 | fresh8 | dp_busy;
 
     // Registers 1..4
     wire [C_W-1:0] c_q;
@@ -113,24 +114,16 @@ module spec_unit #(
         .n(n_q), .d30(d30), .d31(d31), .d32(d32), .d33(d33), .table_sel(table_sel)
     );
 
-    // Multiplier 11
-    wire [TBL_AW-1:0] index11;
-    wire zero11;
-    spec_mul11 #(.ANG_W(ANG_W), .SCALE_W(SCALE_W), .PROD_FRAC(PROD_FRAC), .TBL_AW(TBL_AW)) u_mul11 (
-        .clk(clk), .en(1'b1), .angle(angle8), .scale(scale9), .index(index11), .zero(zero11)
-    );
-
-    // ROM 12 (the zero flag travels beside its read register)
-    wire [TBL_DW-1:0] value12;
-    reg zero12;
-    always @(posedge clk) zero12 <= zero11;
-    spec_rom12 #(.TBL_AW(TBL_AW), .TBL_DW(TBL_DW), .INIT_FILE(ROM12_FILE)) u_rom12 (
-        .clk(clk), .en(1'b1), .table_sel(table_sel), .index(index11), .value(value12)
-    );
-
-    // Multiplier 13 -> output 27
-    spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W)) u_mul13 (
-        .clk(clk), .rst(rst), .en(vpipe[2]), .c(c_q), .value(value12), .zero(zero12), .out(intensity_o)
+    // Multiplier 11, ROM 12, [interpolator], multiplier 13
+    wire out_last_unused;
+    spec_datapath #(
+        .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
+        .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
+        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM12_FILE(ROM12_FILE)
+    ) u_dp (
+        .clk(clk), .rst(rst), .ce(1'b1), .in_valid(fresh8), .in_last(1'b0), .angle(angle8), .scale(scale9),
+        .table_sel(table_sel), .c(c_q), .out(intensity_o), .out_valid(valid_o), .out_last(out_last_unused),
+        .busy(dp_busy)
     );
 endmodule
 `default_nettype wire

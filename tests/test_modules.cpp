@@ -114,11 +114,12 @@ TEST(Mul11, MatchesModel) {
     Dut<Vspec_mul11> u;
     const Model m;
     std::mt19937_64 rng(4);
-    u->en = 1;
+    u->ce = 1;
     auto check = [&](int64_t angle, unsigned n) {
         u->angle = static_cast<uint32_t>(angle);
         u->scale = m.rom9_word(n);
         u.tick();
+        u.tick();  // two pipeline stages
         const TablePos p = m.mul11(angle, n);
         ASSERT_EQ(u->index, p.index) << angle << " n=" << n;
         ASSERT_EQ(u->zero, p.zero) << angle << " n=" << n;
@@ -136,15 +137,21 @@ TEST(Mul11, MatchesModel) {
             }
         }
     }
-    // en = 0 holds the register
-    u->angle = 12345;
+    // ce = 0 holds both stages
+    u->angle = 12345678;
     u->scale = m.rom9_word(5);
     u.tick();
+    u.tick();
     const auto held = u->index;
-    u->en = 0;
+    u->ce = 0;
     u->angle = 0x7654321;
     u.tick();
+    u.tick();
     EXPECT_EQ(u->index, held);
+    u->ce = 1;
+    u.tick();
+    u.tick();
+    EXPECT_EQ(u->index, m.mul11(0x7654321, 5).index);
 }
 
 // Multiplier 13: rounding, zero flag, C exactly for the table's 1.0, never overflows.

@@ -40,6 +40,12 @@ void Format::validate() const {
     need(scale_frac >= 4 && scale_w <= 27 && scale_w > scale_frac, "scale_w/scale_frac out of range");
     need(prod_frac() > tbl_aw + 1, "ang_frac + scale_frac must exceed tbl_aw + 1");
     need(ang_w + scale_w <= 64, "ang_w + scale_w must be <= 64");
+    need(ang_w % 2 == 0, "ang_w must be even (multiplier 11 splits the angle into two halves)");
+    if (interp) {
+        need(interp_frac >= 1 && prod_frac() >= tbl_aw + interp_frac, "interp_frac must be 1..prod_frac - tbl_aw");
+        need(delta_w >= 1 && delta_w <= 20, "delta_w must be 1..20");
+        need(rom12_dw() <= 40, "ROM 12 word wider than 40 bits");
+    }
     // The largest scale must fit: sqrt((2^n_w - 1) / 16) * 2/pi < 2^(scale_w - scale_frac).
     double smax = std::sqrt(((1 << n_w) - 1) / 16.0) * 2.0 / kPi;
     need(smax < std::ldexp(1.0, scale_w - scale_frac), "scale_w - scale_frac too small for the largest n");
@@ -60,32 +66,47 @@ std::vector<uint32_t> make_rom9(const Format& f) {
     return rom;
 }
 
-std::vector<uint32_t> make_rom12(const Format& f) {
+std::vector<uint64_t> make_rom12(const Format& f) {
     f.validate();
     const size_t per = size_t(1) << f.tbl_aw;
-    std::vector<uint32_t> rom(4 * per);
+    std::vector<uint64_t> rom(4 * per);
     for (int t = 0; t < 4; ++t) {
+        std::vector<uint32_t> v(per + 1, 0);  // v[per] = cos^k(pi/2) = 0
         for (size_t i = 0; i < per; ++i) {
             double x = static_cast<double>(i) * (kPi / 2.0) / static_cast<double>(per);
-            double v = std::pow(std::cos(x), kTables[t]);
-            size_t addr = t * per + i;
-            rom[addr] = checked_round(std::ldexp(v, f.tbl_frac), f.tbl_dw(), "ROM 12", addr);
+            v[i] = checked_round(std::ldexp(std::pow(std::cos(x), kTables[t]), f.tbl_frac), f.tbl_dw(), "ROM 12",
+                                 t * per + i);
+        }
+        for (size_t i = 0; i < per; ++i) {
+            uint64_t word = v[i];
+            if (f.interp) {
+                if (v[i + 1] > v[i]) throw std::out_of_range("ROM 12: table " + std::to_string(t) + " rises at " +
+                                                             std::to_string(i));
+                const uint64_t delta = v[i] - v[i + 1];
+                if (delta >= (uint64_t(1) << f.delta_w)) {
+                    throw std::out_of_range("ROM 12: delta " + std::to_string(delta) + " at address " +
+                                            std::to_string(t * per + i) + " does not fit delta_w = " +
+                                            std::to_string(f.delta_w) + " bits");
+                }
+                word |= delta << f.tbl_dw();
+            }
+            rom[t * per + i] = word;
         }
     }
     return rom;
 }
 
-std::string hex_image(const std::vector<uint32_t>& words, int width, const std::string& what) {
+std::string hex_image(const std::vector<uint64_t>& words, int width, const std::string& what) {
     const int digits = (width + 3) / 4;
     std::string out;
     out.reserve(words.size() * (digits + 1));
-    char buf[16];
+    char buf[24];
     for (size_t a = 0; a < words.size(); ++a) {
-        if (width < 32 && (words[a] >> width) != 0) {
+        if (width < 64 && (words[a] >> width) != 0) {
             throw std::out_of_range(what + ": word at address " + std::to_string(a) + " exceeds " +
                                     std::to_string(width) + " bits");
         }
-        std::snprintf(buf, sizeof buf, "%0*x\n", digits, words[a]);
+        std::snprintf(buf, sizeof buf, "%0*llx\n", digits, static_cast<unsigned long long>(words[a]));
         out += buf;
     }
     return out;
@@ -110,6 +131,9 @@ std::vector<Param> params(const Format& f) {
         {"SCALE_FRAC", f.scale_frac, "fraction bits of the ROM 9 word"},
         {"TBL_AW", f.tbl_aw, "ROM 12: positions per table = 2^TBL_AW over [0, pi/2)"},
         {"TBL_FRAC", f.tbl_frac, "ROM 12 word: UQ1.TBL_FRAC, TBL_FRAC+1 bits"},
+        {"INTERP", f.interp ? 1 : 0, "1: ROM 12 words carry the step to the next position, interpolated"},
+        {"INTERP_FRAC", f.interp_frac, "fraction bits of the position used by the interpolation"},
+        {"DELTA_W", f.delta_w, "width of the step field (with INTERP = 1)"},
     };
 }
 }  // namespace
@@ -167,8 +191,9 @@ void write_file(const std::string& path, const std::string& text) {
 void write_all(const Format& f, const std::string& dir) {
     f.validate();
     // Build everything first: a range error leaves no file written.
-    const std::string r9 = hex_image(make_rom9(f), f.scale_w, "ROM 9");
-    const std::string r12 = hex_image(make_rom12(f), f.tbl_dw(), "ROM 12");
+    const auto r9w = make_rom9(f);
+    const std::string r9 = hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.scale_w, "ROM 9");
+    const std::string r12 = hex_image(make_rom12(f), f.rom12_dw(), "ROM 12");
     const std::string vh = verilog_header(f);
     const std::string h = cpp_header(f);
     write_file(dir + "/rom9_scale.hex", r9);

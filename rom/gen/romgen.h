@@ -12,15 +12,16 @@ namespace spec {
 // ROM 9: 2^n_w words, word n = round(sqrt(n / k(n)) * 2/pi * 2^scale_frac); word 0 = 0 (n = 0: cos^0 = 1).
 std::vector<uint32_t> make_rom9(const Format& f);
 
-// ROM 12: 4 * 2^tbl_aw words, word (t << tbl_aw) | i = round(cos^k_t(i * pi/2 / 2^tbl_aw) * 2^tbl_frac).
-std::vector<uint32_t> make_rom12(const Format& f);
+// ROM 12: 4 * 2^tbl_aw words, word (t << tbl_aw) | i = round(cos^k_t(i * pi/2 / 2^tbl_aw) * 2^tbl_frac),
+// with interp: | (word_i - word_(i+1)) << tbl_dw (the next position of the last word is cos^k(pi/2) = 0).
+std::vector<uint64_t> make_rom12(const Format& f);
 
 // Exact real value ROM 9 stands for (before rounding), for the analysis.
 double rom9_exact(const Format& f, unsigned n);
 
 // $readmemh text: one word per line, fixed width hex digits. Every value is range-checked against
 // `width` bits (std::out_of_range names the ROM and the address).
-std::string hex_image(const std::vector<uint32_t>& words, int width, const std::string& what);
+std::string hex_image(const std::vector<uint64_t>& words, int width, const std::string& what);
 
 std::string verilog_header(const Format& f);
 std::string cpp_header(const Format& f);

@@ -30,7 +30,16 @@ struct Format {
     int tbl_aw = 12;
     int tbl_frac = 16;
 
+    // Interpolation (a departure from the patent, off by default): each ROM 12 word also holds
+    // delta_i = table[i] - table[i+1] (>= 0, the tables fall monotonically; table[2^tbl_aw] = cos^k(pi/2) = 0),
+    // multiplier 11 truncates to position i and keeps interp_frac fraction bits f, and the interpolator
+    // gives table[i] - round(delta_i * f / 2^interp_frac). Small tables then keep the accuracy of large ones.
+    bool interp = false;
+    int interp_frac = 10;
+    int delta_w = 10;
+
     int tbl_dw() const { return tbl_frac + 1; }
+    int rom12_dw() const { return tbl_dw() + (interp ? delta_w : 0); }
     int rom12_aw() const { return tbl_aw + 2; }          // {table index (2 bits), position (tbl_aw bits)}
     int prod_frac() const { return ang_frac + scale_frac; }  // fraction bits of multiplier 11's product
     int mul13_shift() const { return c_w + tbl_frac - out_w; }

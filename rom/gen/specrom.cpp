@@ -2,6 +2,7 @@
 //
 //   specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
 //           [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]
+//           [--interp [--interp-frac N] [--delta-w N]]
 //
 // With no options it writes the default images (the ones committed in rom/) into the current directory.
 // Bad input: a one-line message on stderr and exit code 2; nothing is written.
@@ -21,10 +22,12 @@ int main(int argc, char** argv) {
             if (fl == "--help" || fl == "-h") {
                 std::cout << "usage: specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
                              "               [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]\n"
+                             "               [--interp [--interp-frac N] [--delta-w N]]\n"
                              "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n";
                 return 0;
             }
             if (fl == "--out") { out = a.value(fl); continue; }
+            if (fl == "--interp") { f.interp = true; continue; }
             int* field = fl == "--tbl-aw"       ? &f.tbl_aw
                          : fl == "--tbl-frac"   ? &f.tbl_frac
                          : fl == "--scale-w"    ? &f.scale_w
@@ -34,6 +37,8 @@ int main(int argc, char** argv) {
                          : fl == "--ang-frac"   ? &f.ang_frac
                          : fl == "--n-w"        ? &f.n_w
                          : fl == "--l-w"        ? &f.l_w
+                         : fl == "--interp-frac" ? &f.interp_frac
+                         : fl == "--delta-w"    ? &f.delta_w
                                                 : nullptr;
             if (!field) throw UsageError("unknown option " + fl);
             *field = static_cast<int>(parse_int(fl, a.value(fl), 0, 64));

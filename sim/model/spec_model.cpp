@@ -23,15 +23,29 @@ TablePos Model::mul11(int64_t angle, unsigned n) const {
     const int pf = f_.prod_frac();
     const int drop = pf - f_.tbl_aw;
     const unsigned __int128 frac = prod & ((static_cast<unsigned __int128>(1) << pf) - 1);
-    const uint64_t idx_r = static_cast<uint64_t>((frac + (static_cast<unsigned __int128>(1) << (drop - 1))) >> drop);
     TablePos p;
+    if (f_.interp) {
+        p.zero = (prod >> pf) != 0;
+        p.index = static_cast<uint32_t>(frac >> drop);
+        p.frac = static_cast<uint32_t>((frac >> (drop - f_.interp_frac)) & ((uint64_t(1) << f_.interp_frac) - 1));
+        return p;
+    }
+    const uint64_t idx_r = static_cast<uint64_t>((frac + (static_cast<unsigned __int128>(1) << (drop - 1))) >> drop);
     p.zero = (prod >> pf) != 0 || idx_r == (uint64_t(1) << f_.tbl_aw);
     p.index = static_cast<uint32_t>(idx_r & ((uint64_t(1) << f_.tbl_aw) - 1));
     return p;
 }
 
-uint32_t Model::rom12(unsigned n, const TablePos& p) const {
+uint64_t Model::rom12(unsigned n, const TablePos& p) const {
     return rom12_.at((static_cast<size_t>(table_of_n(n)) << f_.tbl_aw) | p.index);
+}
+
+uint32_t Model::interpolate(uint64_t word, uint32_t frac) const {
+    const uint32_t value = static_cast<uint32_t>(word & ((uint64_t(1) << f_.tbl_dw()) - 1));
+    if (!f_.interp) return value;
+    const uint64_t delta = word >> f_.tbl_dw();
+    const uint64_t step = (delta * frac + (uint64_t(1) << (f_.interp_frac - 1))) >> f_.interp_frac;
+    return static_cast<uint32_t>(value - step);
 }
 
 uint32_t Model::mul13(uint32_t c, uint32_t table, bool zero) const {
@@ -43,7 +57,7 @@ uint32_t Model::mul13(uint32_t c, uint32_t table, bool zero) const {
 
 uint32_t Model::pixel(uint32_t c, int64_t angle, unsigned n) const {
     const TablePos p = mul11(angle, n);
-    return mul13(c, rom12(n, p), p.zero);
+    return mul13(c, interpolate(rom12(n, p), p.frac), p.zero);
 }
 
 std::vector<int64_t> Model::angles(const SpanRegs& r) const {

@@ -22,8 +22,9 @@ struct SpanRegs {
 
 // Multiplier 11's registered result: position in ROM 12 and the "past pi/2" flag.
 struct TablePos {
-    uint32_t index = 0;   // tbl_aw bits
-    bool zero = false;    // |sqrt(n/k) * angle| >= pi/2 (after rounding to the table grid)
+    uint32_t index = 0;   // tbl_aw bits: rounded to nearest (interp = false) or truncated (interp = true)
+    uint32_t frac = 0;    // interp_frac bits below the position (interp = true; else 0)
+    bool zero = false;    // |sqrt(n/k) * angle| >= pi/2 (for interp = false: after rounding to the grid)
 };
 
 class Model {
@@ -36,8 +37,10 @@ public:
     int64_t accumulate(int64_t angle, int64_t dzeta) const;
     // Multiplier 11 on |angle| and ROM 9's word for n.
     TablePos mul11(int64_t angle, unsigned n) const;
-    // ROM 12 read, decoder 10 choosing the table.
-    uint32_t rom12(unsigned n, const TablePos& p) const;
+    // ROM 12 read, decoder 10 choosing the table (the whole word, with the step field when interp).
+    uint64_t rom12(unsigned n, const TablePos& p) const;
+    // The interpolator (interp = true): table[i] - round(delta_i * f / 2^interp_frac); else the word itself.
+    uint32_t interpolate(uint64_t word, uint32_t frac) const;
     // Multiplier 13: round(C * table / 2^mul13_shift), 0 when the position is past pi/2.
     uint32_t mul13(uint32_t c, uint32_t table, bool zero) const;
     // The whole datapath after register 8.
@@ -49,7 +52,7 @@ public:
 
     uint32_t rom9_word(unsigned n) const { return rom9_.at(n); }
     const std::vector<uint32_t>& rom9() const { return rom9_; }
-    const std::vector<uint32_t>& rom12() const { return rom12_; }
+    const std::vector<uint64_t>& rom12() const { return rom12_; }
 
     // Host-side quantization (what specsim does before writing the registers).
     int64_t angle_min() const { return -(int64_t(1) << (f_.ang_w - 1)); }
@@ -65,7 +68,7 @@ public:
 private:
     Format f_;
     std::vector<uint32_t> rom9_;
-    std::vector<uint32_t> rom12_;
+    std::vector<uint64_t> rom12_;
 };
 
 }  // namespace spec
