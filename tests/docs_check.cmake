@@ -18,7 +18,7 @@ if(DEFINED IFACE)
 endif()
 # README.md carries the signal rows
 if(DEFINED README)
-  file(STRINGS ${OUT} rows REGEX "^[a-z_]+ +[0-9]+ ")
+  file(STRINGS ${OUT} rows REGEX "^[a-z_]+ +[0-9][0-9] ")
   file(READ ${README} readme)
   foreach(row IN LISTS rows)
     string(FIND "${readme}" "${row}" at)
