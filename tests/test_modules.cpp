@@ -16,15 +16,25 @@
 using namespace spec;
 
 namespace {
+// Verilator 5.006 registers a model's scopes in the thread's current context: make it this model's
+// around construction and destruction.
 template <class V>
 struct Dut {
-    VerilatedContext ctx;
-    std::unique_ptr<V> v{new V(&ctx)};
+    std::unique_ptr<VerilatedContext> ctx{current(new VerilatedContext)};
+    std::unique_ptr<V> v{new V(ctx.get())};
+    static VerilatedContext* current(VerilatedContext* c) {
+        Verilated::threadContextp(c);
+        return c;
+    }
     Dut() {
         v->clk = 0;
         v->eval();
     }
-    ~Dut() { v->final(); }
+    ~Dut() {
+        Verilated::threadContextp(ctx.get());
+        v->final();
+        v.reset();
+    }
     void tick() {
         v->clk = 1;
         v->eval();

@@ -6,6 +6,7 @@
 // differs from what the generator makes now, so RTL, model and generator cannot drift.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 
 namespace spec {
@@ -47,6 +48,24 @@ struct Format {
     // Throws std::invalid_argument with a one-line reason when the combination is not supported.
     void validate() const;
 };
+
+// Named configurations. "default" is the patent's plain lookup (the committed ROM images in rom/);
+// "up5k" fits the iCE40 UP5K's block RAM (ROM 12 of 4 x 256 words with interpolation, a 16-bit ROM 9)
+// and keeps the same accuracy bound (docs/decisions.md, docs/stream.md).
+inline Format config_format(const std::string& name) {
+    Format f;
+    if (name == "default") return f;
+    if (name == "up5k") {
+        f.tbl_aw = 8;
+        f.interp = true;
+        f.interp_frac = 10;
+        f.delta_w = 10;
+        f.scale_w = 16;
+        f.scale_frac = 13;
+        return f;
+    }
+    throw std::invalid_argument("unknown configuration '" + name + "' (default, up5k)");
+}
 
 // The four tables of ROM 12 and the Fig. 10 rule.
 constexpr int kTables[4] = {1, 2, 4, 16};

@@ -1,6 +1,6 @@
 // specrom - writes the $readmemh images of ROM 9 and ROM 12 and the headers spec_params.vh / spec_params.h.
 //
-//   specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
+//   specrom [--out DIR] [--config default|up5k] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
 //           [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]
 //           [--interp [--interp-frac N] [--delta-w N]]
 //
@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
         while (!a.done()) {
             std::string fl = a.flag();
             if (fl == "--help" || fl == "-h") {
-                std::cout << "usage: specrom [--out DIR] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
+                std::cout << "usage: specrom [--out DIR] [--config default|up5k] [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
                              "               [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]\n"
                              "               [--interp [--interp-frac N] [--delta-w N]]\n"
                              "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n";
@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
             }
             if (fl == "--out") { out = a.value(fl); continue; }
             if (fl == "--interp") { f.interp = true; continue; }
+            if (fl == "--config") { f = config_format(a.value(fl)); continue; }
             int* field = fl == "--tbl-aw"       ? &f.tbl_aw
                          : fl == "--tbl-frac"   ? &f.tbl_frac
                          : fl == "--scale-w"    ? &f.scale_w

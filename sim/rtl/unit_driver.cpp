@@ -10,6 +10,9 @@
 namespace spec {
 
 UnitDriver::UnitDriver(const std::string& vcd_path) : ctx_(new VerilatedContext) {
+    // Verilator 5.006 registers and erases a model's scopes in the thread's current context: make it ours
+    // around construction and destruction (several models share a thread in the tests).
+    Verilated::threadContextp(ctx_.get());
     ctx_->traceEverOn(!vcd_path.empty());
     top_.reset(new Vspec_unit(ctx_.get(), "spec_unit"));
     idle_inputs();
@@ -26,8 +29,11 @@ UnitDriver::UnitDriver(const std::string& vcd_path) : ctx_(new VerilatedContext)
 }
 
 UnitDriver::~UnitDriver() {
+    Verilated::threadContextp(ctx_.get());
     if (vcd_) vcd_->close();
     top_->final();
+    vcd_.reset();
+    top_.reset();
 }
 
 void UnitDriver::idle_inputs() {
