@@ -1,23 +1,27 @@
 # Front door of the UA 71489 specular-shading core.
-#   make sim    build everything, run the Fig. 11/12 span and representative spans through the RTL
+#   make sim    build everything, run the Fig. 11/12 span and representative spans through the RTL,
+#               render the default scene through the RTL (image, panel, statistics) and the plots
 #   make test   build, then GoogleTest (Verilator) + Icarus + ROM check via ctest, then lint
 #   make lint   verilator --lint-only -Wall on all RTL, and a Yosys synth_ice40 smoke run
 #   make deps   install the missing Debian packages (sudo when not root)
 #   make roms   regenerate the committed ROM images and headers in rom/
 #   make fig8   print the recomputed Fig. 8 table and q(n), a(n)
 #   make clean  remove build/
+#   make plots  the patent's Fig. 5 and Fig. 9 redrawn (gnuplot) into build/plots
+#   make images regenerate the pictures README shows (docs/img)
+#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
 RTL := $(wildcard rtl/*.v)
 RTL_TOPS := $(basename $(notdir $(RTL)))
 
-.PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help
+.PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help plots images bench bench-render
 
 all: build
 
 help:
-	@sed -n '2,9p' Makefile | sed 's/^# //'
+	@sed -n '2,/^[^#]/s/^# //p' Makefile
 
 deps:
 	@scripts/deps.sh
@@ -49,6 +53,10 @@ sim: build
 	$(BUILD)/specsim demo --vcd $(BUILD)/sim/fig11.vcd --diagram $(BUILD)/sim/fig11.txt
 	@echo
 	@echo "waveform of the Fig. 11 run: $(BUILD)/sim/fig11.vcd (gtkwave $(BUILD)/sim/fig11.vcd)"
+	@echo
+	$(BUILD)/specsim render --scene default --size 512 --model rtl --progress --out $(BUILD)/sim/render_rtl.png \
+	    --panel $(BUILD)/sim/panel.png --stats $(BUILD)/sim/stats.json
+	@$(BUILD)/specsim plots --out-dir $(BUILD)/sim/plots
 
 roms: build
 	$(BUILD)/specrom --out rom
@@ -67,3 +75,19 @@ docs: build
 
 accuracy: build
 	$(BUILD)/specsim accuracy
+
+# The renderer (docs/renderer.md): plots, README's pictures, speed
+plots: build
+	$(BUILD)/specsim plots --out-dir $(BUILD)/plots
+
+images: build
+	@mkdir -p docs/img
+	$(BUILD)/specsim render --scene default --size 320 --model rtl --quiet --out $(BUILD)/img_render.png \
+	    --panel docs/img/panel.png
+	$(BUILD)/specsim plots --out-dir $(BUILD)/img_plots
+	cp $(BUILD)/img_plots/fig5.png $(BUILD)/img_plots/fig9.png docs/img/
+
+bench-render: build
+	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5
+
+bench: bench-render

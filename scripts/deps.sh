@@ -2,7 +2,8 @@
 # Installs the Debian packages the build and tests need, only those that are missing (sudo when not root).
 # Usage: scripts/deps.sh [extra packages...]
 set -euo pipefail
-pkgs=(cmake make g++ verilator iverilog yosys libgtest-dev "$@")
+pkgs=(cmake make g++ verilator iverilog yosys libgtest-dev
+      libglm-dev libpng-dev libtinyobjloader-dev libstb-dev gnuplot-nox "$@")
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "deps: not a Debian system; install these yourself: ${pkgs[*]}" >&2
     exit 1

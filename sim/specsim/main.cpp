@@ -4,6 +4,7 @@
 //   specsim fig8 [--all]
 //   specsim demo [--vcd FILE] [--diagram FILE]
 //   specsim vectors --out FILE [--spans N] [--seed S]
+//   specsim render | render-bench | plots | export-obj   (cmd_render.cpp: host side and renderer)
 //
 // Bad input: a one-line message on stderr and exit code 2.
 #include <cmath>
@@ -19,6 +20,7 @@
 
 #include "analysis.h"
 #include "cli.h"
+#include "commands.h"
 #include "spec_model.h"
 #include "unit_driver.h"
 
@@ -374,7 +376,7 @@ int main(int argc, char** argv) {
         if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::cout << kUsage;
+            std::cout << kUsage << kRenderUsage;
             return 0;
         }
         if (cmd == "span") return cmd_span(argc, argv);
@@ -382,6 +384,10 @@ int main(int argc, char** argv) {
         if (cmd == "demo") return cmd_demo(argc, argv);
         if (cmd == "vectors") return cmd_vectors(argc, argv);
         if (cmd == "accuracy") return cmd_accuracy(argc, argv);
+        if (cmd == "render") return cmd_render(argc, argv);
+        if (cmd == "render-bench") return cmd_render_bench(argc, argv);
+        if (cmd == "plots") return cmd_plots(argc, argv);
+        if (cmd == "export-obj") return cmd_export_obj(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
     } catch (const UsageError& e) {
         std::cerr << "specsim: " << e.what() << "\n";

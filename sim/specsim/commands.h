@@ -1,0 +1,16 @@
+// commands.h - specsim subcommands that live outside main.cpp (the renderer, issue 3).
+// Each takes specsim's argc/argv (argv[1] is the command), returns the exit code, and throws
+// spec::UsageError / std::exception with a one-line message for bad input (main prints it, exits 2).
+#pragma once
+
+namespace spec {
+
+int cmd_render(int argc, char** argv);        // specsim render: a scene through the core, PNG, panel, stats
+int cmd_render_bench(int argc, char** argv);  // specsim render-bench: pixels/s of rtl and golden, spans/s of the host
+int cmd_plots(int argc, char** argv);         // specsim plots: the patent's Fig. 5 and Fig. 9 redrawn (gnuplot)
+int cmd_export_obj(int argc, char** argv);    // specsim export-obj: a built-in scene's meshes as an OBJ file
+
+// The usage lines of these commands, for specsim --help.
+extern const char* const kRenderUsage;
+
+}  // namespace spec
