@@ -166,23 +166,29 @@ render::Scene build_scene(const RenderArgs& r) {
     return s;
 }
 
+// On a terminal: one line redrawn (\r) as the spans go through. Into a file or a pipe: a line at every
+// quarter, so that logs stay readable.
 class ProgressBar {
 public:
-    ProgressBar(bool on, std::string what) : on_(on), what_(std::move(what)) {}
+    ProgressBar(bool on, std::string what) : on_(on), tty_(isatty(2)), what_(std::move(what)) {}
     void operator()(size_t done, size_t total) {
         if (!on_ || total == 0) return;
+        const int pct = int(100.0 * double(done) / double(total));
+        if (!tty_ && pct / 25 == last_ / 25 && done != total) return;
+        if (!tty_ && done == total && last_ == 100) return;
+        last_ = pct;
         const int width = 40;
         const int fill = int(double(done) / double(total) * width);
         std::string bar(size_t(fill), '#');
         bar += std::string(size_t(width - fill), '.');
-        std::fprintf(stderr, "\r  %-9s [%s] %3d%%  %zu/%zu spans", what_.c_str(), bar.c_str(),
-                     int(100.0 * double(done) / double(total)), done, total);
-        if (done == total) std::fprintf(stderr, "\n");
+        std::fprintf(stderr, "%s  %-9s [%s] %3d%%  %zu/%zu spans%s", tty_ ? "\r" : "", what_.c_str(), bar.c_str(),
+                     pct, done, total, tty_ && done != total ? "" : "\n");
         std::fflush(stderr);
     }
 
 private:
-    bool on_;
+    bool on_, tty_;
+    int last_ = -1;
     std::string what_;
 };
 
@@ -223,7 +229,7 @@ int cmd_render(int argc, char** argv) {
             if (std::find(models.begin(), models.end(), m) == models.end()) models.push_back(m);
         }
     }
-    std::printf("render: %s, %dx%d, %zu objects, %llu triangles, %zu spans (%llu hidden spans not sent)\n",
+    std::printf("render: %s, %dx%d, %zu object(s), %llu triangles, %zu spans (%llu hidden spans not sent)\n",
                 sc.name.c_str(), ra.size, ra.size, sc.objects.size(), (unsigned long long)frame.triangles,
                 frame.spans.size(), (unsigned long long)frame.hidden_spans);
     std::fflush(stdout);
@@ -231,7 +237,7 @@ int cmd_render(int argc, char** argv) {
     for (auto m : models) {
         ModelResult r;
         r.model = m;
-        ProgressBar pb(bar, render::model_name(m));
+        ProgressBar pb(bar && m == ra.model, render::model_name(m));
         r.run = render::shade_specular(sc, frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); });
         r.img = render::compose(base, r.run);
         res.push_back(std::move(r));
