@@ -2,7 +2,8 @@
 // multiplier 11 -> ROM 12 (table chosen by decoder 10) -> [interpolator, INTERP = 1] -> multiplier 13.
 // Every stage is registered and advances when `ce` is 1 (a stall holds everything, including ROM 12's read
 // register). Each pixel carries its own C, scale, table and `last` flag, so consecutive pixels may belong to
-// different spans. Latency from the input to `out`: LAT = 4 clocks (5 with INTERP = 1) of `ce`.
+// different spans. Latency from the input to `out`: LAT = 8 clocks (10 with INTERP = 1) of `ce`; no stage
+// holds more than one DSP multiply or one carry chain.
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_datapath #(
@@ -36,31 +37,18 @@ module spec_datapath #(
     localparam TBL_DW = TBL_FRAC + 1;
     localparam WORD_W = TBL_DW + ((INTERP != 0) ? DELTA_W : 0);
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
+    localparam M11 = 5;                           // multiplier 11's stages
+    localparam VS = M11 + 1 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
+    localparam LAT = VS + 2;                      // multiplier 13's two stages
 
-    // side band: s1 = multiplier 11's partial products, s2 = its position, s3 = ROM 12's read register
-    reg v1, v2, v3, l1, l2, l3;
-    reg [C_W-1:0] c1, c2, c3;
-    reg [1:0] t1, t2;
-    reg zero3;
-    reg [FRAC_W-1:0] frac3;
+    // valid flags of every stage (stage s holds what entered s clocks of `ce` ago)
+    reg [LAT:1] vs;
     always @(posedge clk) begin
-        if (rst) begin
-            v1 <= 1'b0;
-            v2 <= 1'b0;
-            v3 <= 1'b0;
-        end else if (ce) begin
-            v1 <= in_valid;
-            v2 <= v1;
-            v3 <= v2;
-        end
-        if (ce) begin
-            l1 <= in_last;   l2 <= l1;   l3 <= l2;
-            c1 <= c;         c2 <= c1;   c3 <= c2;
-            t1 <= table_sel; t2 <= t1;
-        end
+        if (rst) vs <= {LAT{1'b0}};
+        else if (ce) vs <= {vs[LAT-1:1], in_valid};
     end
 
-    // multiplier 11 (two stages)
+    // multiplier 11 (stages 1..5)
     wire [TBL_AW-1:0] index11;
     wire [FRAC_W-1:0] frac11;
     wire zero11;
@@ -71,65 +59,41 @@ module spec_datapath #(
         .clk(clk), .ce(ce), .angle(angle), .scale(scale), .index(index11), .frac(frac11), .zero(zero11)
     );
 
-    // ROM 12 (the zero flag and the fraction travel beside its read register)
+    // ROM 12 (stage 6), addressed by decoder 10's table (delayed to stage 5) and multiplier 11's position
+    wire [1:0] tsel4;
+    spec_delay #(.W(2), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
     wire [WORD_W-1:0] word12;
-    always @(posedge clk) begin
-        if (ce) begin
-            zero3 <= zero11;
-            frac3 <= frac11;
-        end
-    end
     spec_rom12 #(.TBL_AW(TBL_AW), .WORD_W(WORD_W), .INIT_FILE(ROM12_FILE)) u_rom12 (
-        .clk(clk), .en(ce), .table_sel(t2), .index(index11), .value(word12)
+        .clk(clk), .en(ce), .table_sel(tsel4), .index(index11), .value(word12)
     );
+    wire [FRAC_W-1:0] frac5;
+    spec_delay #(.W(FRAC_W), .N(1)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac5));
+    wire zero_m;
+    spec_delay #(.W(1), .N(VS - M11)) u_zero (.clk(clk), .ce(ce), .d(zero11), .q(zero_m));
 
-    // interpolator (INTERP = 1) or the plain table value
+    // interpolator (INTERP = 1, stages 7..8) or the plain table value
     wire [TBL_DW-1:0] value_m;
-    wire zero_m, v_m, l_m;
-    wire [C_W-1:0] c_m;
     generate
         if (INTERP != 0) begin : g_interp
-            reg v4, l4, zero4;
-            reg [C_W-1:0] c4;
-            always @(posedge clk) begin
-                if (rst) v4 <= 1'b0;
-                else if (ce) v4 <= v3;
-                if (ce) begin
-                    l4 <= l3;
-                    zero4 <= zero3;
-                    c4 <= c3;
-                end
-            end
             spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC)) u_interp (
-                .clk(clk), .ce(ce), .word(word12), .frac(frac3), .value(value_m)
+                .clk(clk), .ce(ce), .word(word12), .frac(frac5), .value(value_m)
             );
-            assign zero_m = zero4;
-            assign v_m = v4;
-            assign l_m = l4;
-            assign c_m = c4;
         end else begin : g_plain
             wire unused_frac;
-            assign unused_frac = &{1'b0, frac3};
+            assign unused_frac = &{1'b0, frac5};
             assign value_m = word12;
-            assign zero_m = zero3;
-            assign v_m = v3;
-            assign l_m = l3;
-            assign c_m = c3;
         end
     endgenerate
 
-    // multiplier 13 -> output 27
-    reg vo, lo;
-    always @(posedge clk) begin
-        if (rst) vo <= 1'b0;
-        else if (ce) vo <= v_m;
-        if (ce) lo <= l_m;
-    end
+    // multiplier 13 (two stages) -> output 27
+    wire [C_W-1:0] c_m;
+    spec_delay #(.W(C_W), .N(VS)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
     spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W)) u_mul13 (
-        .clk(clk), .rst(rst), .en(ce & v_m), .c(c_m), .value(value_m), .zero(zero_m), .out(out)
+        .clk(clk), .rst(rst), .ce(ce), .en(ce & vs[LAT-1]), .c(c_m), .value(value_m), .zero(zero_m),
+        .out(out)
     );
-    assign out_valid = vo;
-    assign out_last = lo;
-    assign busy = v1 | v2 | v3 | v_m | vo;
+    spec_delay #(.W(1), .N(LAT)) u_last (.clk(clk), .ce(ce), .d(in_last), .q(out_last));
+    assign out_valid = vs[LAT];
+    assign busy = |vs;
 endmodule
 `default_nettype wire

@@ -18,9 +18,12 @@ module spec_decoder #(
     output wire           d33,
     output wire [1:0]     table_sel   // 0: k = 1, 1: k = 2, 2: k = 4, 3: k = 16
 );
-    assign d30 = (n == 1);
-    assign d31 = (n == 2);
-    assign d32 = (n >= 3) && (n <= 6);
+    // AND/OR gates as in Fig. 13 (no magnitude comparators): the bits above v3 are zero, and v3..v1 match
+    wire low = ~|n[N_W-1:3];
+    wire [2:0] v = n[2:0];
+    assign d30 = low & (v == 3'd1);
+    assign d31 = low & (v == 3'd2);
+    assign d32 = low & ((v == 3'd3) | (v == 3'd4) | (v == 3'd5) | (v == 3'd6));
     assign d33 = ~(d30 | d31 | d32);
     assign table_sel = {d32 | d33, d31 | d33};
 endmodule

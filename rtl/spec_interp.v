@@ -1,7 +1,8 @@
 // spec_interp - linear interpolation between ROM 12 positions (INTERP = 1 only; not in the patent).
 // A ROM 12 word holds {delta_i, table[i]} with delta_i = table[i] - table[i+1] >= 0 (the tables fall
 // monotonically); the result is table[i] - round(delta_i * frac / 2^INTERP_FRAC), which never underflows
-// (the step is at most delta_i). One pipeline stage. It lets a table of 2^8 positions keep the accuracy of
+// (the step is at most delta_i). Two pipeline stages: the product (a DSP block), then one subtraction
+// that also rounds: v - floor((p + 2^(F-1)) / 2^F) = floor((v * 2^F + 2^(F-1) - 1 - p) / 2^F). It lets a table of 2^8 positions keep the accuracy of
 // the patent's plain table of 2^12 (docs/decisions.md), so the core fits small FPGAs' block RAM.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -17,17 +18,27 @@ module spec_interp #(
     output reg  [TBL_DW-1:0]         value
 );
     localparam PW = DELTA_W + INTERP_FRAC;
+    localparam SW = TBL_DW + INTERP_FRAC;
     wire [TBL_DW-1:0] v = word[TBL_DW-1:0];
     wire [DELTA_W-1:0] d = word[DELTA_W+TBL_DW-1:TBL_DW];
-    wire [PW-1:0] prod = {{INTERP_FRAC{1'b0}}, d} * {{DELTA_W{1'b0}}, frac};
-    // cannot overflow: (2^D - 1)(2^F - 1) + 2^(F-1) < 2^(D+F)
-    wire [PW-1:0] rnd = prod + ({{(PW - 1) {1'b0}}, 1'b1} << (INTERP_FRAC - 1));
-    wire [DELTA_W-1:0] step = rnd[PW-1:INTERP_FRAC];
-    wire unused_low;
-    assign unused_low = &{1'b0, rnd[INTERP_FRAC-1:0]};
 
+    // stage 1: delta * frac
+    reg [PW-1:0] prod;
+    reg [TBL_DW-1:0] v_q;
     always @(posedge clk) begin
-        if (ce) value <= v - {{(TBL_DW - DELTA_W) {1'b0}}, step};
+        if (ce) begin
+            prod <= {{INTERP_FRAC{1'b0}}, d} * {{DELTA_W{1'b0}}, frac};
+            v_q <= v;
+        end
+    end
+
+    // stage 2: the rounded difference (never negative: round(prod / 2^F) <= delta <= v)
+    wire [INTERP_FRAC-1:0] bias = {1'b0, {(INTERP_FRAC - 1) {1'b1}}};   // 2^(F-1) - 1
+    wire [SW-1:0] diff = {v_q, bias} - {{(SW - PW) {1'b0}}, prod};
+    wire unused_low;
+    assign unused_low = &{1'b0, diff[INTERP_FRAC-1:0]};
+    always @(posedge clk) begin
+        if (ce) value <= diff[SW-1:INTERP_FRAC];
     end
 endmodule
 `default_nettype wire

@@ -5,8 +5,12 @@
 //              when the rounded position is at or past pi/2 (where the BRDF max(0, cos)^n is 0).
 //   INTERP = 1: truncated to the position below, with INTERP_FRAC fraction bits `frac` for the
 //              interpolator; `zero` is 1 at or past pi/2.
-// Two pipeline stages: the angle is split into halves whose partial products are registered (they map to
-// 16x16 or 18x18 DSP blocks), then summed and rounded.
+// Five pipeline stages, so that no stage holds more than one carry chain or one DSP multiply:
+//   1  m = angle, or ~angle = |angle| - 1 for a negative angle (no carry chain: the +1 comes back in 3)
+//   2  the partial products of m's two halves times the scale (16x16 or 18x18 DSP blocks)
+//   3  + scale for a negative angle, so that the sum is exactly |angle| * scale
+//   4  the product
+//   5  the table position (rounded, or truncated with its fraction)
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_mul11 #(
@@ -30,20 +34,45 @@ module spec_mul11 #(
     localparam PW = ANG_W + SCALE_W;
     localparam DROP = PROD_FRAC - TBL_AW;  // fraction bits below the table position
 
-    // |angle|; -2^(ANG_W-1) becomes 2^(ANG_W-1), which fits ANG_W unsigned bits
-    wire [ANG_W-1:0] mag = angle[ANG_W-1] ? (~angle + {{(ANG_W - 1) {1'b0}}, 1'b1}) : angle;
-
-    // stage 1: partial products of the two halves
-    reg [H+SCALE_W-1:0] pp_lo, pp_hi;
+    // stage 1: m = |angle| - neg (-2^(ANG_W-1) gives 2^(ANG_W-1) - 1), the sign and the scale
+    reg [ANG_W-1:0] mag;
+    reg neg1;
+    reg [SCALE_W-1:0] scale1;
     always @(posedge clk) begin
         if (ce) begin
-            pp_lo <= {{SCALE_W{1'b0}}, mag[H-1:0]} * {{H{1'b0}}, scale};
-            pp_hi <= {{SCALE_W{1'b0}}, mag[ANG_W-1:H]} * {{H{1'b0}}, scale};
+            mag <= angle ^ {ANG_W{angle[ANG_W-1]}};
+            neg1 <= angle[ANG_W-1];
+            scale1 <= scale;
         end
     end
 
-    // stage 2: the product, then the table position
-    wire [PW-1:0] prod = {pp_hi, {H{1'b0}}} + {{H{1'b0}}, pp_lo};
+    // stage 2: partial products of the two halves
+    reg [H+SCALE_W-1:0] pp_lo, pp_hi;
+    reg [SCALE_W-1:0] corr2;   // scale for a negative angle, else 0
+    always @(posedge clk) begin
+        if (ce) begin
+            pp_lo <= {{SCALE_W{1'b0}}, mag[H-1:0]} * {{H{1'b0}}, scale1};
+            pp_hi <= {{SCALE_W{1'b0}}, mag[ANG_W-1:H]} * {{H{1'b0}}, scale1};
+            corr2 <= neg1 ? scale1 : {SCALE_W{1'b0}};
+        end
+    end
+
+    // stage 3: the low partial product corrected (cannot overflow: the whole sum is |angle| * scale)
+    reg [H+SCALE_W-1:0] pp_lo3, pp_hi3;
+    always @(posedge clk) begin
+        if (ce) begin
+            pp_lo3 <= pp_lo + {{H{1'b0}}, corr2};
+            pp_hi3 <= pp_hi;
+        end
+    end
+
+    // stage 4: the product
+    reg [PW-1:0] prod;
+    always @(posedge clk) begin
+        if (ce) prod <= {pp_hi3, {H{1'b0}}} + {{H{1'b0}}, pp_lo3};
+    end
+
+    // stage 5: the table position
     wire past_int = |prod[PW-1:PROD_FRAC];   // >= one quarter turn
 
     generate

@@ -2,8 +2,9 @@
 // out = round(C * table / 2^SHIFT), 0 when `zero`. With OUT_W = C_W and SHIFT = TBL_FRAC, table = 1.0
 // gives C exactly and the result never exceeds 2^OUT_W - 1. The table's top bit (1.0) is only set when the
 // rest is 0, so the product is C x (low TBL_DW-1 bits) plus C shifted: one C_W x (TBL_DW-1) multiplier
-// (a single 16x16 DSP block at the default widths). Registered output, written when `en`, so output 27
-// holds the last pixel between pixels; cleared by the synchronous reset.
+// (a single 16x16 DSP block at the default widths). Two pipeline stages: the product (registered when
+// `ce`), then the rounding (the output register, written when `en`, so output 27 holds the last pixel
+// between pixels; cleared by the synchronous reset).
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_mul13 #(
@@ -14,7 +15,8 @@ module spec_mul13 #(
 ) (
     input  wire              clk,
     input  wire              rst,
-    input  wire              en,
+    input  wire              ce,    // stage 1
+    input  wire              en,    // stage 2 (the output register)
     input  wire [C_W-1:0]    c,
     input  wire [TBL_DW-1:0] value,
     input  wire              zero,
@@ -22,9 +24,12 @@ module spec_mul13 #(
 );
     localparam PW = C_W + TBL_DW;
     wire [TBL_DW-1:0] v = zero ? {TBL_DW{1'b0}} : value;
-    wire [PW-1:0] prod_lo = {{TBL_DW{1'b0}}, c} * {{(C_W + 1) {1'b0}}, v[TBL_DW-2:0]};
-    wire [PW-1:0] prod_hi = v[TBL_DW-1] ? {1'b0, c, {(TBL_DW - 1) {1'b0}}} : {PW{1'b0}};
-    wire [PW-1:0] rounded = prod_lo + prod_hi + ({{(PW - 1) {1'b0}}, 1'b1} << (SHIFT - 1));
+    reg [PW-1:0] prod;
+    always @(posedge clk) begin
+        if (ce) prod <= v[TBL_DW-1] ? {1'b0, c, {(TBL_DW - 1) {1'b0}}}
+                                    : {{TBL_DW{1'b0}}, c} * {{(C_W + 1) {1'b0}}, v[TBL_DW-2:0]};
+    end
+    wire [PW-1:0] rounded = prod + ({{(PW - 1) {1'b0}}, 1'b1} << (SHIFT - 1));
     wire unused_bits;
     generate
         if (SHIFT + OUT_W < PW) begin : g_top

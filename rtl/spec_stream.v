@@ -11,15 +11,17 @@
 // Pixels (m_axis_tdata, OUT_W bits): intensity UQ0.OUT_W; m_axis_tlast = 1 on a span's last pixel.
 //
 // Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
-// span boundaries: the next descriptor waits in a one-entry buffer (and has its ROM 9 word read) while the
-// current span runs. Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 2 + LAT, LAT = 4 (5 with INTERP = 1). Backpressure: every pipeline stage advances only when the output
-// register is empty or being read (ce = !m_axis_tvalid | m_axis_tready); m_axis_tvalid and m_axis_tdata
-// hold until accepted. s_axis_tready = 1 when the descriptor buffer is empty or moving into the span
-// generator in this cycle (it depends combinationally on m_axis_tready).
+// span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
+// Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
+// a + 3 + ACC + LAT = a + 15 (a + 17 with INTERP = 1): buffer, span generator, accumulator (ACC = 4),
+// datapath (LAT = 8 or 10), output register. Backpressure: every pipeline stage advances only when the output
+// register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
+// m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
+// 1 while the descriptor buffer's second entry is free.
 // Reset: rst_n is synchronous, active low. At an edge where it is 0 the buffer, the span generator and the
-// pipeline's valid flags are cleared: from the next cycle s_axis_tready = 1, m_axis_tvalid = 0, and no pixel
-// of a span in progress appears later. s_axis_tready is 0 while rst_n is 0.
+// pipeline's valid flags are cleared: m_axis_tvalid = 0 from the next cycle and no pixel of a span in
+// progress appears later; s_axis_tready is 0 in the cycle after a reset edge and 1 from the one after.
+// A descriptor handed over in a cycle with rst_n = 0 is dropped.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
@@ -46,10 +48,10 @@ module spec_stream #(
     input  wire              s_axis_tvalid,
     output wire              s_axis_tready,
     input  wire [DESC_W-1:0] s_axis_tdata,
-    output wire              m_axis_tvalid,
+    output reg               m_axis_tvalid,
     input  wire              m_axis_tready,
-    output wire [OUT_W-1:0]  m_axis_tdata,
-    output wire              m_axis_tlast
+    output reg  [OUT_W-1:0]  m_axis_tdata,
+    output reg               m_axis_tlast
 );
     wire rst = ~rst_n;
 
@@ -66,83 +68,157 @@ module spec_stream #(
     wire out_valid;
 
     // ---- descriptor buffer ("registers 1-4 and counter 5" of the next span) -------------------------------
-    reg pend_v;
-    reg [C_W-1:0] pend_c;
-    reg [N_W-1:0] pend_n;
-    reg [L_W-1:0] pend_l;
-    reg [ANG_W-1:0] pend_zeta0, pend_dzeta;
-    wire take;           // the span generator takes the buffered descriptor in this cycle
-    assign s_axis_tready = rst_n & (~pend_v | take);
-    wire accept = s_axis_tvalid & s_axis_tready;
+    // Two entries (head, tail) so that s_axis_tready is a register: tready = "the tail is free".
+    localparam DW = C_W + N_W + L_W + 1 + 2 * ANG_W;
+    wire [DW-1:0] d_in = {d_c, d_n, d_l, (d_l == {L_W{1'b0}}), d_zeta0, d_dzeta};
+    reg head_v, tail_v, ready_q;
+    reg [DW-1:0] head, tail;
+    wire take;           // the span generator takes the head in this cycle
+    assign s_axis_tready = ready_q;
+    wire accept = s_axis_tvalid & ready_q;
     always @(posedge clk) begin
-        if (rst) pend_v <= 1'b0;
-        else if (accept) pend_v <= 1'b1;
-        else if (take) pend_v <= 1'b0;
-        if (accept) begin
-            pend_c <= d_c;
-            pend_n <= d_n;
-            pend_l <= d_l;
-            pend_zeta0 <= d_zeta0;
-            pend_dzeta <= d_dzeta;
+        if (rst) begin
+            head_v <= 1'b0;
+            tail_v <= 1'b0;
+            ready_q <= 1'b0;
+        end else begin
+            if (tail_v) begin                        // no accept possible
+                if (take) begin
+                    head <= tail;
+                    tail_v <= 1'b0;
+                end
+            end else if (accept) begin
+                if (take | ~head_v) head <= d_in;
+                else begin
+                    tail <= d_in;
+                    tail_v <= 1'b1;
+                end
+                head_v <= 1'b1;
+            end else if (take) begin
+                head_v <= 1'b0;
+            end
+            // free next cycle unless the tail fills now and is not emptied
+            ready_q <= ~(tail_v ? ~take : (accept & head_v & ~take));
         end
     end
+    wire [C_W-1:0] head_c;
+    wire [N_W-1:0] head_n;
+    wire [L_W-1:0] head_l;
+    wire head_single;    // l = 0: the span is one pixel
+    wire [ANG_W-1:0] head_zeta0, head_dzeta;
+    assign {head_c, head_n, head_l, head_single, head_zeta0, head_dzeta} = head;
 
-    // ROM 9, read as the descriptor is accepted: its word waits beside the buffer
-    wire [SCALE_W-1:0] pend_scale;
+    // ROM 9, read as the span starts: its word is the current span's scale from the span's first pixel on
+    wire [SCALE_W-1:0] cur_scale;
     spec_rom #(.AW(N_W), .DW(SCALE_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
-        .clk(clk), .en(accept), .addr(d_n), .data(pend_scale)
+        .clk(clk), .en(take), .addr(head_n), .data(cur_scale)
     );
-    // decoder 10 on the buffered n
-    wire [1:0] pend_tsel;
+    // decoder 10 on the head's n
+    wire [1:0] head_tsel;
     wire d30_unused, d31_unused, d32_unused, d33_unused;
     spec_decoder #(.N_W(N_W)) u_dec10 (
-        .n(pend_n), .d30(d30_unused), .d31(d31_unused), .d32(d32_unused), .d33(d33_unused),
-        .table_sel(pend_tsel)
+        .n(head_n), .d30(d30_unused), .d31(d31_unused), .d32(d32_unused), .d33(d33_unused),
+        .table_sel(head_tsel)
     );
 
-    // ---- span generator: register 8 with adder 6 / multiplexer 7, the counter, the span's C and scale ----
+    // ---- span generator: the counter, the span's C, scale and table; register 8 below ----------------------
     reg cur_v;
-    reg [L_W-1:0] cur_cnt;        // intervals left after the pixel in register 8
+    reg [L_W-1:0] cur_cnt;        // intervals left after the current pixel
+    reg cur_last;                 // the current pixel is its span's last (cur_cnt == 0), kept as a flag
+    reg cur_first;                // the current pixel is its span's first
+    reg [ANG_W-1:0] cur_zeta0, cur_dzeta;
     reg [C_W-1:0] cur_c;
-    reg [SCALE_W-1:0] cur_scale;
     reg [1:0] cur_tsel;
-    reg [ANG_W-1:0] cur_dzeta;
-    wire cur_last = (cur_cnt == {L_W{1'b0}});
-    wire cur_done = ~cur_v | cur_last;     // register 8's pixel is the span's last (or there is none)
-    assign take = ce & cur_done & pend_v;
+    wire cur_done = ~cur_v | cur_last;     // the current pixel is the span's last (or there is none)
+    assign take = ce & cur_done & head_v;
     wire step = ce & cur_v & ~cur_last;
 
-    wire [ANG_W-1:0] angle8;
-    spec_accum #(.W(ANG_W)) u_acc678 (
-        .clk(clk), .rst(rst), .we(take | step), .sel(~take), .start(pend_zeta0), .step(cur_dzeta),
-        .angle(angle8)
-    );
     always @(posedge clk) begin
         if (rst) cur_v <= 1'b0;
-        else if (ce & cur_done) cur_v <= pend_v;
+        else if (ce & cur_done) cur_v <= head_v;
         if (take) begin
-            cur_cnt <= pend_l;
-            cur_c <= pend_c;
-            cur_scale <= pend_scale;
-            cur_tsel <= pend_tsel;
-            cur_dzeta <= pend_dzeta;
+            cur_cnt <= head_l;
+            cur_last <= head_single;
+            cur_first <= 1'b1;
+            cur_zeta0 <= head_zeta0;
+            cur_dzeta <= head_dzeta;
+            cur_c <= head_c;
+            cur_tsel <= head_tsel;
         end else if (step) begin
             cur_cnt <= cur_cnt - {{(L_W - 1) {1'b0}}, 1'b1};
+            cur_last <= (cur_cnt == {{(L_W - 1) {1'b0}}, 1'b1});
+            cur_first <= 1'b0;
         end
     end
+
+    // register 8: the pipelined accumulator (ACC clocks of ce from the current pixel to its angle)
+    localparam ACC = (ANG_W + L_W + 15) / 16 + 1;
+    wire [ANG_W-1:0] angle8;
+    spec_saccum #(.ANG_W(ANG_W), .L_W(L_W), .SEG(16)) u_acc68 (
+        .clk(clk), .ce(ce), .first(cur_first), .zeta0(cur_zeta0), .dzeta(cur_dzeta), .angle(angle8)
+    );
+    // the current pixel's flags, C, scale and table, delayed to meet its angle
+    reg [ACC:1] v8;
+    always @(posedge clk) begin
+        if (rst) v8 <= {ACC{1'b0}};
+        else if (ce) v8 <= {v8[ACC-1:1], cur_v};
+    end
+    wire last8;
+    wire [C_W-1:0] c8;
+    wire [SCALE_W-1:0] scale8;
+    wire [1:0] tsel8;
+    spec_delay #(.W(1 + C_W + SCALE_W + 2), .N(ACC)) u_side8 (
+        .clk(clk), .ce(ce), .d({cur_last, cur_c, cur_scale, cur_tsel}), .q({last8, c8, scale8, tsel8})
+    );
 
     // ---- datapath: multiplier 11, ROM 12, [interpolator], multiplier 13 -------------------------------------
     wire dp_busy_unused;
+    wire [OUT_W-1:0] dp_out;
+    wire dp_last;
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
         .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
-        .clk(clk), .rst(rst), .ce(ce), .in_valid(cur_v), .in_last(cur_last), .angle(angle8),
-        .scale(cur_scale), .table_sel(cur_tsel), .c(cur_c), .out(m_axis_tdata), .out_valid(out_valid),
-        .out_last(m_axis_tlast), .busy(dp_busy_unused)
+        .clk(clk), .rst(rst), .ce(ce), .in_valid(v8[ACC]), .in_last(last8), .angle(angle8),
+        .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out), .out_valid(out_valid),
+        .out_last(dp_last), .busy(dp_busy_unused)
     );
-    assign ce = ~out_valid | m_axis_tready;
-    assign m_axis_tvalid = out_valid;
+
+    // ---- output register with a skid buffer ---------------------------------------------------------------
+    // The pipeline's enable is a register (the skid buffer is empty), not m_axis_tready itself: no
+    // combinational path from m_axis_tready into the core's hundreds of enables. When the sink stalls, the
+    // one pixel already on its way is caught in the skid buffer and the pipeline stops a clock later.
+    reg skid_v, skid_last;
+    reg [OUT_W-1:0] skid_data;
+    assign ce = ~skid_v;
+    wire out_free = ~m_axis_tvalid | m_axis_tready;
+    always @(posedge clk) begin
+        if (rst) begin
+            m_axis_tvalid <= 1'b0;
+            skid_v <= 1'b0;
+        end else if (skid_v) begin
+            if (m_axis_tready) skid_v <= 1'b0;       // the skid moves to the output register
+        end else if (out_valid) begin                // ce = 1: the pipeline hands over a pixel
+            if (out_free) m_axis_tvalid <= 1'b1;
+            else skid_v <= 1'b1;
+        end else if (m_axis_tready) begin
+            m_axis_tvalid <= 1'b0;
+        end
+        if (skid_v) begin
+            if (m_axis_tready) begin
+                m_axis_tdata <= skid_data;
+                m_axis_tlast <= skid_last;
+            end
+        end else if (out_valid) begin
+            if (out_free) begin
+                m_axis_tdata <= dp_out;
+                m_axis_tlast <= dp_last;
+            end else begin
+                skid_data <= dp_out;
+                skid_last <= dp_last;
+            end
+        end
+    end
 endmodule
 `default_nettype wire

@@ -128,8 +128,7 @@ TEST(Mul11, MatchesModel) {
     auto check = [&](int64_t angle, unsigned n) {
         u->angle = static_cast<uint32_t>(angle);
         u->scale = m.rom9_word(n);
-        u.tick();
-        u.tick();  // two pipeline stages
+        for (int s = 0; s < 5; ++s) u.tick();  // five pipeline stages
         const TablePos p = m.mul11(angle, n);
         ASSERT_EQ(u->index, p.index) << angle << " n=" << n;
         ASSERT_EQ(u->zero, p.zero) << angle << " n=" << n;
@@ -150,17 +149,14 @@ TEST(Mul11, MatchesModel) {
     // ce = 0 holds both stages
     u->angle = 12345678;
     u->scale = m.rom9_word(5);
-    u.tick();
-    u.tick();
+    for (int s = 0; s < 5; ++s) u.tick();
     const auto held = u->index;
     u->ce = 0;
     u->angle = 0x7654321;
-    u.tick();
-    u.tick();
+    for (int s = 0; s < 5; ++s) u.tick();
     EXPECT_EQ(u->index, held);
     u->ce = 1;
-    u.tick();
-    u.tick();
+    for (int s = 0; s < 5; ++s) u.tick();
     EXPECT_EQ(u->index, m.mul11(0x7654321, 5).index);
 }
 
@@ -171,11 +167,13 @@ TEST(Mul13, MatchesModel) {
     std::mt19937_64 rng(5);
     u->rst = 0;
     u->en = 1;
+    u->ce = 1;
     auto check = [&](uint32_t c, uint32_t v, bool zero) {
         u->c = c;
         u->value = v;
         u->zero = zero;
         u.tick();
+        u.tick();  // product, then rounding
         ASSERT_EQ(u->out, m.mul13(c, v, zero)) << c << " " << v << " " << zero;
     };
     for (int i = 0; i < 50000; ++i) check(rng() & 0xffff, rng() % 0x10001, rng() % 8 == 0);

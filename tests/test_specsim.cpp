@@ -53,9 +53,12 @@ TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
     for (const char* s : spans) {
         Result rtl = run(std::string("span ") + s);
         Result gold = run(std::string("span ") + s + " --model golden");
+        Result stream = run(std::string("span ") + s + " --model stream");
         ASSERT_EQ(rtl.code, 0) << rtl.err;
         ASSERT_EQ(gold.code, 0) << gold.err;
+        ASSERT_EQ(stream.code, 0) << stream.err;
         EXPECT_EQ(rtl.out, gold.out) << s;
+        EXPECT_EQ(stream.out, rtl.out) << s;
         auto l = lines(rtl.out);
         ASSERT_GE(l.size(), 2u);
         EXPECT_EQ(l[0], "i,value");

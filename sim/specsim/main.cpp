@@ -1,6 +1,6 @@
 // specsim - the command-line front end of the UA 71489 specular-shading core.
 //
-//   specsim span --n N --c C --zeta0 Z --dzeta D --len L [--model rtl|golden|ref] [--vcd FILE]
+//   specsim span --n N --c C --zeta0 Z --dzeta D --len L [--model rtl|stream|golden|ref] [--vcd FILE]
 //   specsim fig8 [--all]
 //   specsim demo [--vcd FILE] [--diagram FILE]
 //   specsim vectors --out FILE [--spans N] [--seed S]
@@ -22,6 +22,8 @@
 #include "cli.h"
 #include "commands.h"
 #include "spec_model.h"
+#include "Vspec_stream.h"
+#include "stream_driver.h"
 #include "unit_driver.h"
 
 using namespace spec;
@@ -38,7 +40,8 @@ const char* kUsage =
     "           --zeta0 Z    start angle in radians (the unscaled -lambda), |Z| < 8\n"
     "           --dzeta D    angle step per pixel in radians\n"
     "           --len L      number of intervals l, 0..65535 (l + 1 pixels)\n"
-    "           --model M    rtl (Verilated spec_unit, default) | golden (bit-exact C++ model) |\n"
+    "           --model M    rtl (Verilated spec_unit, default) | stream (Verilated spec_stream) |\n"
+    "                        golden (bit-exact C++ model) |\n"
     "                        ref (double precision C * max(0, cos(zeta0 + i*dzeta))^n)\n"
     "           --vcd FILE   with --model rtl: write a waveform of the run\n"
     "  fig8     the recomputed Fig. 8 table and q(n), a(n) for the Fig. 10 rule (--all: every n)\n"
@@ -49,6 +52,7 @@ const char* kUsage =
     "           approximation's own error (q, a) and the patent's claims\n"
     "           --model golden|rtl (default golden; equal bit for bit)  --points P (100..100000, default 4000)\n"
     "           --tbl-aw N   (golden only) model a ROM 12 of 2^N positions per table instead of the default\n"
+    "           --config C   (golden only) default | up5k (interpolated 4 x 256 tables, docs/stream.md)\n"
     "  vectors  test vectors from the bit-exact model for the Icarus testbench\n"
     "           --out FILE --spans N (1..5000, default 200) --seed S\n";
 
@@ -90,8 +94,8 @@ SpanArgs parse_span(int argc, char** argv) {
             have_l = true;
         } else if (fl == "--model") {
             s.model = a.value(fl);
-            if (s.model != "rtl" && s.model != "golden" && s.model != "ref") {
-                throw UsageError("--model: '" + s.model + "' is not one of rtl, golden, ref");
+            if (s.model != "rtl" && s.model != "stream" && s.model != "golden" && s.model != "ref") {
+                throw UsageError("--model: '" + s.model + "' is not one of rtl, stream, golden, ref");
             }
         } else if (fl == "--vcd") {
             s.vcd = a.value(fl);
@@ -138,6 +142,10 @@ int cmd_span(int argc, char** argv) {
         std::vector<uint32_t> px;
         if (s.model == "golden") {
             px = m.span(s.regs);
+        } else if (s.model == "stream") {
+            StreamDriver<Vspec_stream> d;
+            std::mt19937_64 rng(1);
+            for (const StreamPixel& p : d.run({s.regs}, Stalls{}, rng)) px.push_back(p.value);
         } else {
             UnitDriver d(s.vcd);
             px = d.span(s.regs);
@@ -261,11 +269,19 @@ int cmd_accuracy(int argc, char** argv) {
             points = parse_int(fl, a.value(fl), 100, 100000);
         } else if (fl == "--tbl-aw") {
             fmt.tbl_aw = static_cast<int>(parse_int(fl, a.value(fl), 4, 16));
+        } else if (fl == "--config") {
+            try {
+                fmt = config_format(a.value(fl));
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(std::string("--config: ") + e.what());
+            }
         } else {
             throw UsageError("accuracy: unknown option " + fl);
         }
     }
-    if (model == "rtl" && fmt.tbl_aw != Format().tbl_aw) throw UsageError("--tbl-aw: only with --model golden");
+    if (model == "rtl" && (fmt.tbl_aw != Format().tbl_aw || fmt.interp)) {
+        throw UsageError("--tbl-aw, --config: only with --model golden");
+    }
     const Model m(fmt);
     const Format& f = m.format();
     const ErrorTable& e = fig10_errors();
@@ -293,9 +309,9 @@ int cmd_accuracy(int argc, char** argv) {
     } ranges[] = {{"n = 1 (cos)", 1, 1, "<= 1 %"},          {"n = 2 (cos^2)", 2, 2, "<= 1 %"},
                   {"n = 3..6 (cos^4)", 3, 6, "<= 1 %"},      {"n = 7..1000 (cos^16)", 7, 1000, "<= 1 %, <= 0.6 % (n >= 6)"},
                   {"n = 1001..1023 (cos^16)", 1001, 1023, "-"}, {"n = 0 (C)", 0, 0, "-"}};
-    std::printf("Core (%s model, ROM 12 with 2^%d positions per table, %lld points per n on [0, pi/2], "
+    std::printf("Core (%s model, ROM 12 with 2^%d positions per table%s, %lld points per n on [0, pi/2], "
                 "C = 1 - 2^-16)\nagainst double precision\n\n",
-                model.c_str(), f.tbl_aw, points);
+                model.c_str(), f.tbl_aw, f.interp ? " and interpolation" : "", points);
     std::printf("| BRDF range | patent's claim | approximation q (double) | core, max rel. error in epicentre |"
                 " approximation a (double) | core, max abs. error / C on [0, pi/2] |\n"
                 "|---|---|---|---|---|---|\n");
