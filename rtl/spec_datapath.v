@@ -2,7 +2,7 @@
 // multiplier 11 -> ROM 12 (table chosen by decoder 10) -> [interpolator, INTERP = 1] -> multiplier 13.
 // Every stage is registered and advances when `ce` is 1 (a stall holds everything, including ROM 12's read
 // register). Each pixel carries its own C, scale, table and `last` flag, so consecutive pixels may belong to
-// different spans. Latency from the input to `out`: LAT = 8 clocks (10 with INTERP = 1) of `ce`; no stage
+// different spans. Latency from the input to `out`: LAT = 10 clocks (12 with INTERP = 1) of `ce`; no stage
 // holds more than one DSP multiply or one carry chain.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -37,7 +37,7 @@ module spec_datapath #(
     localparam TBL_DW = TBL_FRAC + 1;
     localparam WORD_W = TBL_DW + ((INTERP != 0) ? DELTA_W : 0);
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
-    localparam M11 = 5;                           // multiplier 11's stages
+    localparam M11 = 7;                           // multiplier 11's stages
     localparam VS = M11 + 1 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
     localparam LAT = VS + 2;                      // multiplier 13's two stages
 
@@ -48,7 +48,7 @@ module spec_datapath #(
         else if (ce) vs <= {vs[LAT-1:1], in_valid};
     end
 
-    // multiplier 11 (stages 1..5)
+    // multiplier 11 (stages 1..7)
     wire [TBL_AW-1:0] index11;
     wire [FRAC_W-1:0] frac11;
     wire zero11;
@@ -59,7 +59,7 @@ module spec_datapath #(
         .clk(clk), .ce(ce), .angle(angle), .scale(scale), .index(index11), .frac(frac11), .zero(zero11)
     );
 
-    // ROM 12 (stage 6), addressed by decoder 10's table (delayed to stage 5) and multiplier 11's position
+    // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
     wire [1:0] tsel4;
     spec_delay #(.W(2), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
     wire [WORD_W-1:0] word12;
@@ -71,7 +71,7 @@ module spec_datapath #(
     wire zero_m;
     spec_delay #(.W(1), .N(VS - M11)) u_zero (.clk(clk), .ce(ce), .d(zero11), .q(zero_m));
 
-    // interpolator (INTERP = 1, stages 7..8) or the plain table value
+    // interpolator (INTERP = 1, stages 9..10) or the plain table value
     wire [TBL_DW-1:0] value_m;
     generate
         if (INTERP != 0) begin : g_interp

@@ -5,12 +5,14 @@
 //              when the rounded position is at or past pi/2 (where the BRDF max(0, cos)^n is 0).
 //   INTERP = 1: truncated to the position below, with INTERP_FRAC fraction bits `frac` for the
 //              interpolator; `zero` is 1 at or past pi/2.
-// Five pipeline stages, so that no stage holds more than one carry chain or one DSP multiply:
-//   1  m = angle, or ~angle = |angle| - 1 for a negative angle (no carry chain: the +1 comes back in 3)
-//   2  the partial products of m's two halves times the scale (16x16 or 18x18 DSP blocks)
-//   3  + scale for a negative angle, so that the sum is exactly |angle| * scale
-//   4  the product
-//   5  the table position (rounded, or truncated with its fraction)
+// Seven pipeline stages, so that no stage holds more than a half-width carry chain or one DSP multiply:
+//   1  the angle's bits inverted when it is negative, and its sign
+//   2  the low half of |angle| (+1 for a negative angle), with its carry
+//   3  the high half of |angle| (plus that carry)
+//   4  the partial products of the two halves times the scale (16x16 or 18x18 DSP blocks)
+//   5  the middle of the sum, pp_hi[low] + pp_lo[high], with its carry
+//   6  the top of the sum, pp_hi[high] + that carry
+//   7  the table position (rounded, or truncated with its fraction)
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_mul11 #(
@@ -34,45 +36,55 @@ module spec_mul11 #(
     localparam PW = ANG_W + SCALE_W;
     localparam DROP = PROD_FRAC - TBL_AW;  // fraction bits below the table position
 
-    // stage 1: m = |angle| - neg (-2^(ANG_W-1) gives 2^(ANG_W-1) - 1), the sign and the scale
-    reg [ANG_W-1:0] mag;
-    reg neg1;
-    reg [SCALE_W-1:0] scale1;
+    // stages 1 to 3: |angle|; -2^(ANG_W-1) becomes 2^(ANG_W-1), which fits ANG_W unsigned bits
+    reg [ANG_W-1:0] inv0;
+    reg neg0;
+    reg [H:0] lo1;
+    reg [ANG_W-H-1:0] hi1, mag_hi;
+    reg [H-1:0] mag_lo;
+    reg [SCALE_W-1:0] scale0, scale1, scale2;
     always @(posedge clk) begin
         if (ce) begin
-            mag <= angle ^ {ANG_W{angle[ANG_W-1]}};
-            neg1 <= angle[ANG_W-1];
-            scale1 <= scale;
+            inv0 <= angle ^ {ANG_W{angle[ANG_W-1]}};
+            neg0 <= angle[ANG_W-1];
+            scale0 <= scale;
+            lo1 <= {1'b0, inv0[H-1:0]} + {{H{1'b0}}, neg0};
+            hi1 <= inv0[ANG_W-1:H];
+            scale1 <= scale0;
+            mag_lo <= lo1[H-1:0];
+            mag_hi <= hi1 + {{(ANG_W - H - 1) {1'b0}}, lo1[H]};
+            scale2 <= scale1;
         end
     end
 
-    // stage 2: partial products of the two halves
-    reg [H+SCALE_W-1:0] pp_lo, pp_hi;
-    reg [SCALE_W-1:0] corr2;   // scale for a negative angle, else 0
+    // stage 4: partial products of the two halves
+    localparam LW = H + SCALE_W;
+    reg [LW-1:0] pp_lo, pp_hi;
     always @(posedge clk) begin
         if (ce) begin
-            pp_lo <= {{SCALE_W{1'b0}}, mag[H-1:0]} * {{H{1'b0}}, scale1};
-            pp_hi <= {{SCALE_W{1'b0}}, mag[ANG_W-1:H]} * {{H{1'b0}}, scale1};
-            corr2 <= neg1 ? scale1 : {SCALE_W{1'b0}};
+            pp_lo <= {{SCALE_W{1'b0}}, mag_lo} * {{H{1'b0}}, scale2};
+            pp_hi <= {{SCALE_W{1'b0}}, mag_hi} * {{H{1'b0}}, scale2};
         end
     end
 
-    // stage 3: the low partial product corrected (cannot overflow: the whole sum is |angle| * scale)
-    reg [H+SCALE_W-1:0] pp_lo3, pp_hi3;
+    // stages 5 and 6: prod = (pp_hi + pp_lo[LW-1:H]) * 2^H + pp_lo[H-1:0], the addition in two halves
+    reg [SCALE_W:0] mid4;
+    reg [H-1:0] low4, low5, top4;
+    reg [SCALE_W-1:0] mid5;
+    reg [H-1:0] top5;
     always @(posedge clk) begin
         if (ce) begin
-            pp_lo3 <= pp_lo + {{H{1'b0}}, corr2};
-            pp_hi3 <= pp_hi;
+            mid4 <= {1'b0, pp_hi[SCALE_W-1:0]} + {1'b0, pp_lo[LW-1:H]};
+            top4 <= pp_hi[LW-1:SCALE_W];
+            low4 <= pp_lo[H-1:0];
+            top5 <= top4 + {{(H - 1) {1'b0}}, mid4[SCALE_W]};
+            mid5 <= mid4[SCALE_W-1:0];
+            low5 <= low4;
         end
     end
+    wire [PW-1:0] prod = {top5, mid5, low5};
 
-    // stage 4: the product
-    reg [PW-1:0] prod;
-    always @(posedge clk) begin
-        if (ce) prod <= {pp_hi3, {H{1'b0}}} + {{H{1'b0}}, pp_lo3};
-    end
-
-    // stage 5: the table position
+    // stage 7: the table position
     wire past_int = |prod[PW-1:PROD_FRAC];   // >= one quarter turn
 
     generate

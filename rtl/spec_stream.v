@@ -13,8 +13,8 @@
 // Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
 // span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 3 + ACC + LAT = a + 15 (a + 17 with INTERP = 1): buffer, span generator, accumulator (ACC = 4),
-// datapath (LAT = 8 or 10), output register. Backpressure: every pipeline stage advances only when the output
+// a + 3 + ACC + LAT = a + 17 (a + 19 with INTERP = 1): buffer, span generator, accumulator (ACC = 4),
+// datapath (LAT = 10 or 12), output register. Backpressure: every pipeline stage advances only when the output
 // register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
 // m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
 // 1 while the descriptor buffer's second entry is free.
@@ -76,29 +76,24 @@ module spec_stream #(
     wire take;           // the span generator takes the head in this cycle
     assign s_axis_tready = ready_q;
     wire accept = s_axis_tvalid & ready_q;
+    // The data registers load without conditions on the input: the head whenever it is free or being
+    // taken, the tail whenever it is free; the valid flags say what they hold. This keeps the enables of
+    // the wide registers one gate away from flip-flops.
+    wire head_load = ~head_v | take;
+    always @(posedge clk) begin
+        if (head_load) head <= tail_v ? tail : d_in;
+        if (~tail_v) tail <= d_in;
+    end
+    wire tail_v_d = tail_v ? ~take : (accept & head_v & ~take);
     always @(posedge clk) begin
         if (rst) begin
             head_v <= 1'b0;
             tail_v <= 1'b0;
             ready_q <= 1'b0;
         end else begin
-            if (tail_v) begin                        // no accept possible
-                if (take) begin
-                    head <= tail;
-                    tail_v <= 1'b0;
-                end
-            end else if (accept) begin
-                if (take | ~head_v) head <= d_in;
-                else begin
-                    tail <= d_in;
-                    tail_v <= 1'b1;
-                end
-                head_v <= 1'b1;
-            end else if (take) begin
-                head_v <= 1'b0;
-            end
-            // free next cycle unless the tail fills now and is not emptied
-            ready_q <= ~(tail_v ? ~take : (accept & head_v & ~take));
+            if (head_load) head_v <= tail_v | accept;
+            tail_v <= tail_v_d;
+            ready_q <= ~tail_v_d;
         end
     end
     wire [C_W-1:0] head_c;

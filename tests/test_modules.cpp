@@ -128,7 +128,7 @@ TEST(Mul11, MatchesModel) {
     auto check = [&](int64_t angle, unsigned n) {
         u->angle = static_cast<uint32_t>(angle);
         u->scale = m.rom9_word(n);
-        for (int s = 0; s < 5; ++s) u.tick();  // five pipeline stages
+        for (int s = 0; s < 7; ++s) u.tick();  // seven pipeline stages
         const TablePos p = m.mul11(angle, n);
         ASSERT_EQ(u->index, p.index) << angle << " n=" << n;
         ASSERT_EQ(u->zero, p.zero) << angle << " n=" << n;
@@ -149,14 +149,14 @@ TEST(Mul11, MatchesModel) {
     // ce = 0 holds both stages
     u->angle = 12345678;
     u->scale = m.rom9_word(5);
-    for (int s = 0; s < 5; ++s) u.tick();
+    for (int s = 0; s < 7; ++s) u.tick();
     const auto held = u->index;
     u->ce = 0;
     u->angle = 0x7654321;
-    for (int s = 0; s < 5; ++s) u.tick();
+    for (int s = 0; s < 7; ++s) u.tick();
     EXPECT_EQ(u->index, held);
     u->ce = 1;
-    for (int s = 0; s < 5; ++s) u.tick();
+    for (int s = 0; s < 7; ++s) u.tick();
     EXPECT_EQ(u->index, m.mul11(0x7654321, 5).index);
 }
 
