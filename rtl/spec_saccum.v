@@ -10,7 +10,7 @@
 //   - the segments are re-aligned by delays and clamped to ANG_W bits in a last stage.
 // For a constant step the clamp of the exact sum equals spec_unit's step-by-step saturation (the sequence is
 // monotone: once past an end it stays past it), so the angles are bit for bit those of spec_unit.
-// Latency: the angle of the pixel presented with ce = 1 in cycle t is on `angle` in cycle t + NSEG + 1.
+// Latency: the angle of the pixel presented with ce = 1 in cycle t is on `angle` in cycle t + NSEG + 2.
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_saccum #(
@@ -94,13 +94,17 @@ module spec_saccum #(
         end
     endgenerate
 
-    // clamp stage
-    wire in_range = (exact[AW-1:ANG_W-1] == {(AW - ANG_W + 1) {1'b0}}) ||
-                    (exact[AW-1:ANG_W-1] == {(AW - ANG_W + 1) {1'b1}});
+    // clamp, in two stages: the range flags, then the choice
+    reg [ANG_W-1:0] low_c;
+    reg all0, all1, sign_c;
     always @(posedge clk) begin
         if (ce) begin
-            angle <= in_range ? exact[ANG_W-1:0]
-                              : (exact[AW-1] ? {1'b1, {(ANG_W - 1) {1'b0}}} : {1'b0, {(ANG_W - 1) {1'b1}}});
+            low_c <= exact[ANG_W-1:0];
+            all0 <= ~|exact[AW-1:ANG_W-1];
+            all1 <= &exact[AW-1:ANG_W-1];
+            sign_c <= exact[AW-1];
+            angle <= (all0 | all1) ? low_c
+                                   : (sign_c ? {1'b1, {(ANG_W - 1) {1'b0}}} : {1'b0, {(ANG_W - 1) {1'b1}}});
         end
     end
 endmodule

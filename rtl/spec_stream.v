@@ -13,7 +13,7 @@
 // Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
 // span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 3 + ACC + LAT = a + 17 (a + 19 with INTERP = 1): buffer, span generator, accumulator (ACC = 4),
+// a + 3 + ACC + LAT = a + 18 (a + 20 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
 // datapath (LAT = 10 or 12), output register. Backpressure: every pipeline stage advances only when the output
 // register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
 // m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
@@ -147,7 +147,7 @@ module spec_stream #(
     end
 
     // register 8: the pipelined accumulator (ACC clocks of ce from the current pixel to its angle)
-    localparam ACC = (ANG_W + L_W + 15) / 16 + 1;
+    localparam ACC = (ANG_W + L_W + 15) / 16 + 2;
     wire [ANG_W-1:0] angle8;
     spec_saccum #(.ANG_W(ANG_W), .L_W(L_W), .SEG(16)) u_acc68 (
         .clk(clk), .ce(ce), .first(cur_first), .zeta0(cur_zeta0), .dzeta(cur_dzeta), .angle(angle8)
