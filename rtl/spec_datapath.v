@@ -2,7 +2,7 @@
 // multiplier 11 -> ROM 12 (table chosen by decoder 10) -> [interpolator, INTERP = 1] -> multiplier 13.
 // Every stage is registered and advances when `ce` is 1 (a stall holds everything, including ROM 12's read
 // register). Each pixel carries its own C, scale, table and `last` flag, so consecutive pixels may belong to
-// different spans. Latency from the input to `out`: LAT = 10 clocks (12 with INTERP = 1) of `ce`; no stage
+// different spans. Latency from the input to `out`: LAT = 11 clocks (13 with INTERP = 1) of `ce`; no stage
 // holds more than one DSP multiply or one carry chain.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -38,7 +38,7 @@ module spec_datapath #(
     localparam WORD_W = TBL_DW + ((INTERP != 0) ? DELTA_W : 0);
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
     localparam M11 = 7;                           // multiplier 11's stages
-    localparam VS = M11 + 1 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
+    localparam VS = M11 + 2 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
     localparam LAT = VS + 2;                      // multiplier 13's two stages
 
     // valid flags of every stage (stage s holds what entered s clocks of `ce` ago)
@@ -62,26 +62,28 @@ module spec_datapath #(
     // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
     wire [1:0] tsel4;
     spec_delay #(.W(2), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
-    wire [WORD_W-1:0] word12;
+    wire [WORD_W-1:0] word12, word_q;
     spec_rom12 #(.TBL_AW(TBL_AW), .WORD_W(WORD_W), .INIT_FILE(ROM12_FILE)) u_rom12 (
         .clk(clk), .en(ce), .table_sel(tsel4), .index(index11), .value(word12)
     );
+    // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5)
+    spec_delay #(.W(WORD_W), .N(1)) u_word (.clk(clk), .ce(ce), .d(word12), .q(word_q));
     wire [FRAC_W-1:0] frac5;
-    spec_delay #(.W(FRAC_W), .N(1)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac5));
+    spec_delay #(.W(FRAC_W), .N(2)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac5));
     wire zero_m;
     spec_delay #(.W(1), .N(VS - M11)) u_zero (.clk(clk), .ce(ce), .d(zero11), .q(zero_m));
 
-    // interpolator (INTERP = 1, stages 9..10) or the plain table value
+    // interpolator (INTERP = 1, stages 10..11) or the plain table value
     wire [TBL_DW-1:0] value_m;
     generate
         if (INTERP != 0) begin : g_interp
             spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC)) u_interp (
-                .clk(clk), .ce(ce), .word(word12), .frac(frac5), .value(value_m)
+                .clk(clk), .ce(ce), .word(word_q), .frac(frac5), .value(value_m)
             );
         end else begin : g_plain
             wire unused_frac;
             assign unused_frac = &{1'b0, frac5};
-            assign value_m = word12;
+            assign value_m = word_q;
         end
     endgenerate
 

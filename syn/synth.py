@@ -55,11 +55,18 @@ def run(cmd, log, cwd=ROOT):
 
 
 def count_cells(stat_text, patterns):
+    """Sums the counts of cells whose type matches; reads both `stat` layouts ("NAME COUNT" in Yosys 0.23,
+    "COUNT NAME" in newer ones)."""
     total = 0
     for line in stat_text.splitlines():
         m = re.match(r"^\s+(\S+)\s+(\d+)\s*$", line)
-        if m and any(re.fullmatch(p, m.group(1)) for p in patterns):
-            total += int(m.group(2))
+        name, count = (m.group(1), m.group(2)) if m else (None, None)
+        if not m:
+            m = re.match(r"^\s+(\d+)\s+(\S+)\s*$", line)
+            if m:
+                name, count = m.group(2), m.group(1)
+        if name and any(re.fullmatch(p, name) for p in patterns):
+            total += int(count)
     return total
 
 
