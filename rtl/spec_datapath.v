@@ -2,7 +2,7 @@
 // multiplier 11 -> ROM 12 (table chosen by decoder 10) -> [interpolator, INTERP = 1] -> multiplier 13.
 // Every stage is registered and advances when `ce` is 1 (a stall holds everything, including ROM 12's read
 // register). Each pixel carries its own C, scale, table and `last` flag, so consecutive pixels may belong to
-// different spans. Latency from the input to `out`: LAT = 11 clocks (13 with INTERP = 1) of `ce`; no stage
+// different spans. Latency from the input to `out`: LAT = 12 clocks (14 with INTERP = 1) of `ce`; no stage
 // holds more than one DSP multiply or one carry chain.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -39,7 +39,7 @@ module spec_datapath #(
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
     localparam M11 = 7;                           // multiplier 11's stages
     localparam VS = M11 + 2 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
-    localparam LAT = VS + 2;                      // multiplier 13's two stages
+    localparam LAT = VS + 3;                      // multiplier 13's three stages
 
     // valid flags of every stage (stage s holds what entered s clocks of `ce` ago)
     reg [LAT:1] vs;
@@ -87,7 +87,7 @@ module spec_datapath #(
         end
     endgenerate
 
-    // multiplier 13 (two stages) -> output 27
+    // multiplier 13 (three stages) -> output 27
     wire [C_W-1:0] c_m;
     spec_delay #(.W(C_W), .N(VS)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
     spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W)) u_mul13 (

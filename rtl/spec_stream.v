@@ -13,8 +13,8 @@
 // Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
 // span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 3 + ACC + LAT = a + 19 (a + 21 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
-// datapath (LAT = 11 or 13), output register. Backpressure: every pipeline stage advances only when the output
+// a + 3 + ACC + LAT = a + 20 (a + 22 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
+// datapath (LAT = 12 or 14), output register. Backpressure: every pipeline stage advances only when the output
 // register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
 // m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
 // 1 while the descriptor buffer's second entry is free.

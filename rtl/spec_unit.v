@@ -10,7 +10,7 @@
 //   l      0 .. 2^L_W - 1 intervals         counter 5 (inputs 23, 24): l + 1 pixels
 //   out    UQ0.OUT_W                        output 27
 // Timing (see docs/interface.md): with Start in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
-// is in cycle t + 14 + 2i (t + 16 + 2i with INTERP = 1); busy_o falls in the cycle after the last valid_o.
+// is in cycle t + 15 + 2i (t + 17 + 2i with INTERP = 1); busy_o falls in the cycle after the last valid_o.
 // Start, register writes and counter loads are ignored while busy_o is 1; init_n = 0 at a clock edge
 // returns to idle (busy_o = 0, valid_o = 0 from the next cycle) and clears every register.
 `timescale 1ns / 1ps

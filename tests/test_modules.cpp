@@ -173,7 +173,8 @@ TEST(Mul13, MatchesModel) {
         u->value = v;
         u->zero = zero;
         u.tick();
-        u.tick();  // product, then rounding
+        u.tick();
+        u.tick();  // inputs, product, rounding
         ASSERT_EQ(u->out, m.mul13(c, v, zero)) << c << " " << v << " " << zero;
     };
     for (int i = 0; i < 50000; ++i) check(rng() & 0xffff, rng() % 0x10001, rng() % 8 == 0);

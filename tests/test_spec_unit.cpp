@@ -129,8 +129,8 @@ TEST(SpecUnit, Fig11And12Run) {
     EXPECT_EQ(s34, "001010101000000000000000") << "a count pulse on 34 after each strobe";
     EXPECT_EQ(s35, "111111110111111111111111") << "borrow 35 on the fourth count pulse";
     EXPECT_EQ(s28, "111111111000000000000000") << "flip-flop 39 (28) until the borrow";
-    EXPECT_EQ(valid, "000000000000010101010000") << "data valid 29: 37 delayed by the pipeline";
-    EXPECT_EQ(busy, "111111111111111111110000") << "busy_o until the last pixel is out";
+    EXPECT_EQ(valid, "000000000000001010101000") << "data valid 29: 37 delayed by the pipeline";
+    EXPECT_EQ(busy, "111111111111111111111000") << "busy_o until the last pixel is out";
     // the decoder's one-hot output for n = 10 is 33 (cos^16)
     const CtrlSignals c = d.signals();
     EXPECT_TRUE(c.d33 && !c.d30 && !c.d31 && !c.d32);
@@ -160,8 +160,8 @@ TEST(SpecUnit, PixelTimingAndOnePulsePerPixel) {
             ASSERT_LT(d.cycle() - t0, 4u * len + 100);
         }
         ASSERT_EQ(px, m.span(r));
-        for (size_t i = 0; i < at.size(); ++i) EXPECT_EQ(at[i], 14 + 2 * i) << "pixel " << i;
-        EXPECT_EQ(d.cycle() - t0, 14 + 2 * len + 1) << "busy falls the cycle after the last pixel";
+        for (size_t i = 0; i < at.size(); ++i) EXPECT_EQ(at[i], 15 + 2 * i) << "pixel " << i;
+        EXPECT_EQ(d.cycle() - t0, 15 + 2 * len + 1) << "busy falls the cycle after the last pixel";
         EXPECT_FALSE(d.top().valid_o);
         // intensity_o holds the last pixel while idle
         d.steps(5);
