@@ -187,32 +187,23 @@ module spec_stream #(
     reg skid_v, skid_last;
     reg [OUT_W-1:0] skid_data;
     assign ce = ~skid_v;
-    wire out_free = ~m_axis_tvalid | m_axis_tready;
+    // each next-state function below has at most four inputs: one LUT level from the flip-flops
+    wire o_load = skid_v ? m_axis_tready : (out_valid & (~m_axis_tvalid | m_axis_tready));
     always @(posedge clk) begin
         if (rst) begin
             m_axis_tvalid <= 1'b0;
             skid_v <= 1'b0;
-        end else if (skid_v) begin
-            if (m_axis_tready) skid_v <= 1'b0;       // the skid moves to the output register
-        end else if (out_valid) begin                // ce = 1: the pipeline hands over a pixel
-            if (out_free) m_axis_tvalid <= 1'b1;
-            else skid_v <= 1'b1;
-        end else if (m_axis_tready) begin
-            m_axis_tvalid <= 1'b0;
+        end else begin
+            m_axis_tvalid <= skid_v | out_valid | (m_axis_tvalid & ~m_axis_tready);
+            skid_v <= skid_v ? ~m_axis_tready : (out_valid & m_axis_tvalid & ~m_axis_tready);
         end
-        if (skid_v) begin
-            if (m_axis_tready) begin
-                m_axis_tdata <= skid_data;
-                m_axis_tlast <= skid_last;
-            end
-        end else if (out_valid) begin
-            if (out_free) begin
-                m_axis_tdata <= dp_out;
-                m_axis_tlast <= dp_last;
-            end else begin
-                skid_data <= dp_out;
-                skid_last <= dp_last;
-            end
+        if (~skid_v) begin                  // an empty skid buffer copies the pipeline's output
+            skid_data <= dp_out;
+            skid_last <= dp_last;
+        end
+        if (o_load) begin
+            m_axis_tdata <= skid_v ? skid_data : dp_out;
+            m_axis_tlast <= skid_v ? skid_last : dp_last;
         end
     end
 endmodule
