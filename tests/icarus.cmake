@@ -1,5 +1,6 @@
 # Icarus Verilog run: specsim writes spans and expected pixels from the bit-exact model, the Verilog
-# testbench drives spec_unit with them and exits non-zero ($fatal) on the first mismatch.
+# testbench TB (tb_spec_unit or tb_spec_stream) drives the core with them and exits non-zero ($fatal) on
+# the first mismatch.
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${SPECSIM} vectors --out ${WORK}/vectors.hex --spans 400 --seed 7
                 RESULT_VARIABLE rc)
@@ -7,14 +8,17 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "specsim vectors failed (${rc})")
 endif()
 file(GLOB RTL ${SRC}/rtl/*.v)
-execute_process(COMMAND ${IVERILOG} -g2005 -Wall -I${SRC}/rom -o ${WORK}/tb.vvp -s tb_spec_unit
-                        ${SRC}/tests/iverilog/tb_spec_unit.v ${RTL}
+if(NOT DEFINED TB)
+  set(TB tb_spec_unit)
+endif()
+execute_process(COMMAND ${IVERILOG} -g2005 -Wall -I${SRC}/rom -o ${WORK}/${TB}.vvp -s ${TB}
+                        ${SRC}/tests/iverilog/${TB}.v ${RTL}
                 WORKING_DIRECTORY ${SRC} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "iverilog failed (${rc})")
 endif()
 # $readmemh paths in the RTL defaults are relative to the repository root
-execute_process(COMMAND ${VVP} -n ${WORK}/tb.vvp +vectors=${WORK}/vectors.hex
+execute_process(COMMAND ${VVP} -n ${WORK}/${TB}.vvp +vectors=${WORK}/vectors.hex ${PLUSARGS}
                 WORKING_DIRECTORY ${SRC} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "${out}${err}")
 if(NOT rc EQUAL 0)

@@ -10,7 +10,11 @@ int cmd_render_bench(int argc, char** argv);  // specsim render-bench: pixels/s 
 int cmd_plots(int argc, char** argv);         // specsim plots: the patent's Fig. 5 and Fig. 9 redrawn (gnuplot)
 int cmd_export_obj(int argc, char** argv);    // specsim export-obj: a built-in scene's meshes as an OBJ file
 
+int cmd_bench_stream(int argc, char** argv);  // specsim bench-stream: cycles/pixel and simulation speed (cmd_bench.cpp)
+int cmd_stream_diagram(int argc, char** argv);  // specsim stream-diagram: AXI timing from a simulation (cmd_bench.cpp)
+
 // The usage lines of these commands, for specsim --help.
 extern const char* const kRenderUsage;
+extern const char* const kBenchUsage;
 
 }  // namespace spec

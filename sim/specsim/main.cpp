@@ -392,7 +392,7 @@ int main(int argc, char** argv) {
         if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::cout << kUsage << kRenderUsage;
+            std::cout << kUsage << kRenderUsage << kBenchUsage;
             return 0;
         }
         if (cmd == "span") return cmd_span(argc, argv);
@@ -402,6 +402,8 @@ int main(int argc, char** argv) {
         if (cmd == "accuracy") return cmd_accuracy(argc, argv);
         if (cmd == "render") return cmd_render(argc, argv);
         if (cmd == "render-bench") return cmd_render_bench(argc, argv);
+        if (cmd == "bench-stream") return cmd_bench_stream(argc, argv);
+        if (cmd == "stream-diagram") return cmd_stream_diagram(argc, argv);
         if (cmd == "plots") return cmd_plots(argc, argv);
         if (cmd == "export-obj") return cmd_export_obj(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
