@@ -35,8 +35,10 @@ $(BUILD)/CMakeCache.txt: | deps
 
 configure: $(BUILD)/CMakeCache.txt
 
+# Verilator 5.006's CMake integration lists the generated sources at configure time: after an RTL change that
+# changes that list, the first build can compile a stale list and fail; re-configuring and building again fixes it.
 build: deps configure
-	cmake --build $(BUILD) -j$(JOBS)
+	cmake --build $(BUILD) -j$(JOBS) || (cmake $(BUILD) > /dev/null && cmake --build $(BUILD) -j$(JOBS))
 
 ctest: build
 	cd $(BUILD) && ctest -j$(JOBS) --output-on-failure
