@@ -18,6 +18,7 @@ module spec_datapath #(
     parameter INTERP = 0,
     parameter INTERP_FRAC = 10,
     parameter DELTA_W = 10,
+    parameter TSEL_W = 2,
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,
@@ -27,7 +28,7 @@ module spec_datapath #(
     input  wire               in_last,
     input  wire [ANG_W-1:0]   angle,      // register 8
     input  wire [SCALE_W-1:0] scale,      // ROM 9
-    input  wire [1:0]         table_sel,  // decoder 10
+    input  wire [TSEL_W-1:0]  table_sel,  // decoder 10
     input  wire [C_W-1:0]     c,          // register 1
     output wire [OUT_W-1:0]   out,        // output 27
     output wire               out_valid,
@@ -60,10 +61,10 @@ module spec_datapath #(
     );
 
     // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
-    wire [1:0] tsel4;
-    spec_delay #(.W(2), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
+    wire [TSEL_W-1:0] tsel4;
+    spec_delay #(.W(TSEL_W), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
     wire [WORD_W-1:0] word12, word_q;
-    spec_rom12 #(.TBL_AW(TBL_AW), .WORD_W(WORD_W), .INIT_FILE(ROM12_FILE)) u_rom12 (
+    spec_rom12 #(.TBL_AW(TBL_AW), .TSEL_W(TSEL_W), .WORD_W(WORD_W), .INIT_FILE(ROM12_FILE)) u_rom12 (
         .clk(clk), .en(ce), .table_sel(tsel4), .index(index11), .value(word12)
     );
     // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5)

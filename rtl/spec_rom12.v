@@ -1,24 +1,26 @@
 // spec_rom12 - ROM 12 ("first ROM") of UA 71489 Fig. 1: the four tables cos^k(x), k = 1, 2, 4, 16,
 // x = i * (pi/2) / 2^TBL_AW. Address = {table_sel (decoder 10), index (multiplier 11)}; the patent drives
 // the top address bits with the four one-hot lines 30..33, of which only 4 of 16 codes occur - the 2-bit
-// code addresses the same four tables without the unused space. Words UQ1.TBL_FRAC (TBL_DW bits): 1.0 exact;
-// with interpolation (INTERP = 1, not in the patent) each word also carries the step to the next position
-// in its top bits, so WORD_W = TBL_DW + DELTA_W.
+// code addresses the same four tables without the unused space. Other table sets (docs/tuned.md): up to
+// 2^TSEL_W tables, whatever powers k the image holds (the generator's --tables).
+// Words UQ1.TBL_FRAC (TBL_DW bits): 1.0 exact; with interpolation (INTERP = 1, not in the patent) each word
+// also carries the step to the next position in its top bits, so WORD_W = TBL_DW + DELTA_W.
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_rom12 #(
     parameter TBL_AW = 12,
+    parameter TSEL_W = 2,
     parameter WORD_W = 17,
     parameter INIT_FILE = ""
 ) (
     input  wire              clk,
     input  wire              en,
-    input  wire [1:0]        table_sel,
+    input  wire [TSEL_W-1:0] table_sel,
     input  wire [TBL_AW-1:0] index,
     output wire [WORD_W-1:0] value   // one clock after the address
 );
     spec_rom #(
-        .AW(TBL_AW + 2),
+        .AW(TBL_AW + TSEL_W),
         .DW(WORD_W),
         .INIT_FILE(INIT_FILE)
     ) u_mem (

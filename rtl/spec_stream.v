@@ -25,6 +25,14 @@
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
+// The patent's default header (rom/spec_params.vh) has no table field in ROM 9: decoder 10's gates choose.
+// Headers of tuned mode or other table sets (specrom --mode tuned, --tables) define both (docs/tuned.md).
+`ifndef SPEC_DECODER_ROM
+`define SPEC_DECODER_ROM 0
+`endif
+`ifndef SPEC_TSEL_W
+`define SPEC_TSEL_W 2
+`endif
 module spec_stream #(
     parameter C_W = `SPEC_C_W,
     parameter ANG_W = `SPEC_ANG_W,
@@ -39,6 +47,8 @@ module spec_stream #(
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
     parameter DELTA_W = `SPEC_DELTA_W,
+    parameter DECODER_ROM = `SPEC_DECODER_ROM,   // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
+    parameter TSEL_W = `SPEC_TSEL_W,             // ROM 12 table index width (2 with DECODER_ROM = 0)
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter DESC_W = 128
@@ -103,12 +113,15 @@ module spec_stream #(
     wire [ANG_W-1:0] head_zeta0, head_dzeta;
     assign {head_c, head_n, head_l, head_single, head_zeta0, head_dzeta} = head;
 
-    // ROM 9, read as the span starts: its word is the current span's scale from the span's first pixel on
-    wire [SCALE_W-1:0] cur_scale;
-    spec_rom #(.AW(N_W), .DW(SCALE_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
-        .clk(clk), .en(take), .addr(head_n), .data(cur_scale)
+    // ROM 9, read as the span starts: its word is the current span's scale (and, with DECODER_ROM = 1, its
+    // table) from the span's first pixel on
+    localparam R9_W = SCALE_W + ((DECODER_ROM != 0) ? TSEL_W : 0);
+    wire [R9_W-1:0] rom9_word;
+    spec_rom #(.AW(N_W), .DW(R9_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
+        .clk(clk), .en(take), .addr(head_n), .data(rom9_word)
     );
-    // decoder 10 on the head's n
+    wire [SCALE_W-1:0] cur_scale = rom9_word[SCALE_W-1:0];
+    // decoder 10 on the head's n (DECODER_ROM = 0)
     wire [1:0] head_tsel;
     wire d30_unused, d31_unused, d32_unused, d33_unused;
     spec_decoder #(.N_W(N_W)) u_dec10 (
@@ -123,7 +136,7 @@ module spec_stream #(
     reg cur_first;                // the current pixel is its span's first
     reg [ANG_W-1:0] cur_zeta0, cur_dzeta;
     reg [C_W-1:0] cur_c;
-    reg [1:0] cur_tsel;
+    reg [1:0] cur_gate_tsel;      // decoder 10's gates (DECODER_ROM = 0)
     wire cur_done = ~cur_v | cur_last;     // the current pixel is the span's last (or there is none)
     assign take = ce & cur_done & head_v;
     wire step = ce & cur_v & ~cur_last;
@@ -138,13 +151,24 @@ module spec_stream #(
             cur_zeta0 <= head_zeta0;
             cur_dzeta <= head_dzeta;
             cur_c <= head_c;
-            cur_tsel <= head_tsel;
+            cur_gate_tsel <= head_tsel;
         end else if (step) begin
             cur_cnt <= cur_cnt - {{(L_W - 1) {1'b0}}, 1'b1};
             cur_last <= (cur_cnt == {{(L_W - 1) {1'b0}}, 1'b1});
             cur_first <= 1'b0;
         end
     end
+
+    wire [TSEL_W-1:0] cur_tsel;
+    generate
+        if (DECODER_ROM != 0) begin : g_dec_rom
+            assign cur_tsel = rom9_word[R9_W-1:SCALE_W];
+            wire unused_gates;
+            assign unused_gates = &{1'b0, cur_gate_tsel};
+        end else begin : g_dec_gates
+            assign cur_tsel = cur_gate_tsel;
+        end
+    endgenerate
 
     // register 8: the pipelined accumulator (ACC clocks of ce from the current pixel to its angle)
     localparam ACC = (ANG_W + L_W + 15) / 16 + 2;
@@ -161,8 +185,8 @@ module spec_stream #(
     wire last8;
     wire [C_W-1:0] c8;
     wire [SCALE_W-1:0] scale8;
-    wire [1:0] tsel8;
-    spec_delay #(.W(1 + C_W + SCALE_W + 2), .N(ACC)) u_side8 (
+    wire [TSEL_W-1:0] tsel8;
+    spec_delay #(.W(1 + C_W + SCALE_W + TSEL_W), .N(ACC)) u_side8 (
         .clk(clk), .ce(ce), .d({cur_last, cur_c, cur_scale, cur_tsel}), .q({last8, c8, scale8, tsel8})
     );
 
@@ -173,7 +197,7 @@ module spec_stream #(
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM12_FILE(ROM12_FILE)
+        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
         .clk(clk), .rst(rst), .ce(ce), .in_valid(v8[ACC]), .in_last(last8), .angle(angle8),
         .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out), .out_valid(out_valid),

@@ -16,6 +16,14 @@
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
+// The patent's default header (rom/spec_params.vh) has no table field in ROM 9: decoder 10's gates choose.
+// Headers of tuned mode or other table sets (specrom --mode tuned, --tables) define both (docs/tuned.md).
+`ifndef SPEC_DECODER_ROM
+`define SPEC_DECODER_ROM 0
+`endif
+`ifndef SPEC_TSEL_W
+`define SPEC_TSEL_W 2
+`endif
 module spec_unit #(
     parameter C_W = `SPEC_C_W,
     parameter ANG_W = `SPEC_ANG_W,
@@ -30,6 +38,8 @@ module spec_unit #(
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
     parameter DELTA_W = `SPEC_DELTA_W,
+    parameter DECODER_ROM = `SPEC_DECODER_ROM,   // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
+    parameter TSEL_W = `SPEC_TSEL_W,             // ROM 12 table index width (2 with DECODER_ROM = 0)
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE
 ) (
@@ -104,22 +114,39 @@ module spec_unit #(
         .clk(clk), .rst(rst), .we(sig37), .sel(sig36), .start(zeta0_q), .step(dzeta_q), .angle(angle8)
     );
 
-    // ROM 9 and decoder 10 (both follow register 4; ROM 9 one clock later, ready long before the first pixel)
+    // ROM 9 and decoder 10 (both follow register 4; ROM 9 one clock later, ready long before the first pixel).
+    // DECODER_ROM = 1: the table comes from ROM 9's word (decoder 10 as a ROM), the gates' one-hot lines
+    // 30..33 stay observable.
     wire [SCALE_W-1:0] scale9;
-    spec_rom9 #(.N_W(N_W), .SCALE_W(SCALE_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
-        .clk(clk), .n(n_q), .scale(scale9)
+    wire [TSEL_W-1:0] rom_tsel;
+    spec_rom9 #(
+        .N_W(N_W), .SCALE_W(SCALE_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .INIT_FILE(ROM9_FILE)
+    ) u_rom9 (
+        .clk(clk), .n(n_q), .scale(scale9), .table_sel(rom_tsel)
     );
-    wire [1:0] table_sel;
+    wire [1:0] gate_tsel;
     spec_decoder #(.N_W(N_W)) u_dec10 (
-        .n(n_q), .d30(d30), .d31(d31), .d32(d32), .d33(d33), .table_sel(table_sel)
+        .n(n_q), .d30(d30), .d31(d31), .d32(d32), .d33(d33), .table_sel(gate_tsel)
     );
+    wire [TSEL_W-1:0] table_sel;
+    generate
+        if (DECODER_ROM != 0) begin : g_dec_rom
+            assign table_sel = rom_tsel;
+            wire unused_gates;
+            assign unused_gates = &{1'b0, gate_tsel};
+        end else begin : g_dec_gates
+            assign table_sel = gate_tsel;
+            wire unused_rom;
+            assign unused_rom = &{1'b0, rom_tsel};
+        end
+    endgenerate
 
     // Multiplier 11, ROM 12, [interpolator], multiplier 13
     wire out_last_unused;
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM12_FILE(ROM12_FILE)
+        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
         .clk(clk), .rst(rst), .ce(1'b1), .in_valid(fresh8), .in_last(1'b0), .angle(angle8), .scale(scale9),
         .table_sel(table_sel), .c(c_q), .out(intensity_o), .out_valid(valid_o), .out_last(out_last_unused),

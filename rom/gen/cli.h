@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace spec {
 
@@ -36,6 +37,23 @@ inline double parse_double(const std::string& flag, const std::string& s) {
     if (end == s.c_str() || *end != '\0') throw UsageError(flag + ": '" + s + "' is not a number");
     if (!std::isfinite(v) || errno == ERANGE) throw UsageError(flag + ": '" + s + "' is not a finite number");
     return v;
+}
+
+// A table set "1,2,4,16": strictly increasing integers in 1..256, at most 16 of them.
+inline std::vector<int> parse_tables(const std::string& flag, const std::string& s) {
+    std::vector<int> t;
+    size_t pos = 0;
+    while (true) {
+        const size_t comma = s.find(',', pos);
+        const std::string item = s.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        const int k = static_cast<int>(parse_int(flag, item, 1, 256));
+        if (!t.empty() && k <= t.back()) throw UsageError(flag + ": the powers must be strictly increasing");
+        t.push_back(k);
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    if (t.size() > 16) throw UsageError(flag + ": at most 16 tables");
+    return t;
 }
 
 // Walks argv as "--flag value" pairs (and bare "--switch"es the caller names).

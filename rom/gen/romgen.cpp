@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fit.h"
+
 namespace spec {
 
 namespace {
@@ -46,22 +48,29 @@ void Format::validate() const {
         need(delta_w >= 1 && delta_w <= 20, "delta_w must be 1..20");
         need(rom12_dw() <= 40, "ROM 12 word wider than 40 bits");
     }
-    // The largest scale must fit: sqrt((2^n_w - 1) / 16) * 2/pi < 2^(scale_w - scale_frac).
-    double smax = std::sqrt(((1 << n_w) - 1) / 16.0) * 2.0 / kPi;
+    need(!tables.empty() && tables.size() <= 16, "the table set must hold 1..16 tables");
+    for (size_t i = 0; i < tables.size(); ++i) {
+        need(tables[i] >= 1 && tables[i] <= 256 && (i == 0 || tables[i] > tables[i - 1]),
+             "the table set must be strictly increasing powers k in 1..256");
+    }
+    need(rom9_dw() <= 32, "ROM 9 word (scale and table index) wider than 32 bits");
+    // The largest scale must fit: sqrt((2^n_w - 1) / k_max) * 2/pi < 2^(scale_w - scale_frac) (for the
+    // patent's tables k_max = 16; a table set that serves large n from a small k can still fail in make_rom9).
+    double smax = std::sqrt(((1 << n_w) - 1) / double(tables.back())) * 2.0 / kPi;
     need(smax < std::ldexp(1.0, scale_w - scale_frac), "scale_w - scale_frac too small for the largest n");
 }
 
 double rom9_exact(const Format& f, unsigned n) {
-    (void)f;
-    if (n == 0) return 0.0;
-    return std::sqrt(static_cast<double>(n) / k_of_n(n)) * 2.0 / kPi;
+    return table_fits(f).at(n).scale * 2.0 / kPi;
 }
 
 std::vector<uint32_t> make_rom9(const Format& f) {
     f.validate();
+    const std::vector<TableFit>& fits = table_fits(f);
     std::vector<uint32_t> rom(size_t(1) << f.n_w);
     for (size_t n = 0; n < rom.size(); ++n) {
-        rom[n] = checked_round(std::ldexp(rom9_exact(f, unsigned(n)), f.scale_frac), f.scale_w, "ROM 9", n);
+        rom[n] = checked_round(std::ldexp(fits[n].scale * 2.0 / kPi, f.scale_frac), f.scale_w, "ROM 9", n);
+        if (f.decoder_rom()) rom[n] |= uint32_t(fits[n].table) << f.scale_w;   // decoder 10 as a ROM field
     }
     return rom;
 }
@@ -69,12 +78,13 @@ std::vector<uint32_t> make_rom9(const Format& f) {
 std::vector<uint64_t> make_rom12(const Format& f) {
     f.validate();
     const size_t per = size_t(1) << f.tbl_aw;
-    std::vector<uint64_t> rom(4 * per);
-    for (int t = 0; t < 4; ++t) {
+    const int ntab = 1 << f.tsel_w();   // the tables of f.tables, then zero tables (never addressed)
+    std::vector<uint64_t> rom(size_t(ntab) * per);
+    for (int t = 0; t < ntab; ++t) {
         std::vector<uint32_t> v(per + 1, 0);  // v[per] = cos^k(pi/2) = 0
-        for (size_t i = 0; i < per; ++i) {
+        for (size_t i = 0; t < int(f.tables.size()) && i < per; ++i) {
             double x = static_cast<double>(i) * (kPi / 2.0) / static_cast<double>(per);
-            v[i] = checked_round(std::ldexp(std::pow(std::cos(x), kTables[t]), f.tbl_frac), f.tbl_dw(), "ROM 12",
+            v[i] = checked_round(std::ldexp(std::pow(std::cos(x), f.tables[t]), f.tbl_frac), f.tbl_dw(), "ROM 12",
                                  t * per + i);
         }
         for (size_t i = 0; i < per; ++i) {
@@ -146,6 +156,11 @@ std::string verilog_header(const Format& f) {
     for (const auto& p : params(f)) {
         o << "`define SPEC_" << p.name << " " << p.value << "  // " << p.doc << "\n";
     }
+    if (f.decoder_rom()) {  // only outside the patent's default, whose committed header stays as it was
+        o << "`define SPEC_DECODER_ROM 1  // " << mode_name(f.mode) << " mode: ROM 9's top TSEL_W bits are the table\n"
+          << "`define SPEC_TSEL_W " << f.tsel_w() << "  // ROM 12 table index width (" << f.tables.size()
+          << " tables)\n";
+    }
     o << "`define SPEC_ROM9_FILE \"rom/rom9_scale.hex\"\n"
       << "`define SPEC_ROM12_FILE \"rom/rom12_cosk.hex\"\n"
       << "`endif\n";
@@ -160,10 +175,16 @@ std::string cpp_header(const Format& f) {
     for (const auto& p : params(f)) {
         o << "constexpr int " << p.name << " = " << p.value << ";  // " << p.doc << "\n";
     }
+    if (f.decoder_rom()) {
+        o << "constexpr int DECODER_ROM = 1;  // " << mode_name(f.mode) << " mode: ROM 9's top TSEL_W bits are the table\n"
+          << "constexpr int TSEL_W = " << f.tsel_w() << ";\n";
+    }
     o << "constexpr int TBL_DW = " << f.tbl_dw() << ";\n"
       << "constexpr int ROM9_DEPTH = " << (1 << f.n_w) << ";\n"
-      << "constexpr int ROM12_DEPTH = " << (4 << f.tbl_aw) << ";\n"
-      << "constexpr int TABLE_K[4] = {1, 2, 4, 16};\n"
+      << "constexpr int ROM12_DEPTH = " << (1 << f.rom12_aw()) << ";\n"
+      << "constexpr int TABLE_K[" << f.tables.size() << "] = {";
+    for (size_t i = 0; i < f.tables.size(); ++i) o << (i ? ", " : "") << f.tables[i];
+    o << "};\n"
       << "}  // namespace spec_params\n";
     return o.str();
 }
@@ -192,7 +213,7 @@ void write_all(const Format& f, const std::string& dir) {
     f.validate();
     // Build everything first: a range error leaves no file written.
     const auto r9w = make_rom9(f);
-    const std::string r9 = hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.scale_w, "ROM 9");
+    const std::string r9 = hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.rom9_dw(), "ROM 9");
     const std::string r12 = hex_image(make_rom12(f), f.rom12_dw(), "ROM 12");
     const std::string vh = verilog_header(f);
     const std::string h = cpp_header(f);

@@ -9,14 +9,17 @@
 
 namespace spec {
 
-// ROM 9: 2^n_w words, word n = round(sqrt(n / k(n)) * 2/pi * 2^scale_frac); word 0 = 0 (n = 0: cos^0 = 1).
+// ROM 9: 2^n_w words, word n = round(s(n) * 2/pi * 2^scale_frac) with s(n) the scale of fit.h (patent mode:
+// sqrt(n / k(n))); word 0 = 0 (n = 0: cos^0 = 1). With f.decoder_rom() (tuned mode or another table set) the
+// table index of n sits above the scale: word = table << scale_w | scale (rom9_dw() bits).
 std::vector<uint32_t> make_rom9(const Format& f);
 
-// ROM 12: 4 * 2^tbl_aw words, word (t << tbl_aw) | i = round(cos^k_t(i * pi/2 / 2^tbl_aw) * 2^tbl_frac),
+// ROM 12: 2^tsel_w * 2^tbl_aw words (4 tables for the patent's set), word (t << tbl_aw) | i =
+// round(cos^k_t(i * pi/2 / 2^tbl_aw) * 2^tbl_frac) with k_t = f.tables[t] (0 for the padding tables),
 // with interp: | (word_i - word_(i+1)) << tbl_dw (the next position of the last word is cos^k(pi/2) = 0).
 std::vector<uint64_t> make_rom12(const Format& f);
 
-// Exact real value ROM 9 stands for (before rounding), for the analysis.
+// Exact real value ROM 9's scale stands for (s(n) * 2/pi, before rounding), for the analysis.
 double rom9_exact(const Format& f, unsigned n);
 
 // $readmemh text: one word per line, fixed width hex digits. Every value is range-checked against

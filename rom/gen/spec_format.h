@@ -8,8 +8,27 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace spec {
+
+// How ROM 9 (and the table choice) are filled (docs/tuned.md).
+//   patent: ROM 9 holds sqrt(n/k) (the patent's Taylor match), decoder 10 picks k by the Fig. 10 gates.
+//   tuned:  ROM 9 holds, per n, the scale that minimises the worst relative error over the epicentre
+//           (minimax) and, in two extra bits above it, the table that does best: the decoder becomes a ROM
+//           (the patent allows it: "decoder 10 may also be a ROM"). Same datapath, same ROM 12.
+enum class Mode { patent, tuned };
+inline const char* mode_name(Mode m) { return m == Mode::tuned ? "tuned" : "patent"; }
+// Throws std::invalid_argument for anything but "patent" or "tuned".
+inline Mode parse_mode(const std::string& s) {
+    if (s == "patent") return Mode::patent;
+    if (s == "tuned") return Mode::tuned;
+    throw std::invalid_argument("unknown mode '" + s + "' (patent, tuned)");
+}
+
+// The patent's four tables of ROM 12 (Fig. 10, Fig. 15).
+constexpr int kTables[4] = {1, 2, 4, 16};
+inline std::vector<int> patent_tables() { return {1, 2, 4, 16}; }
 
 struct Format {
     // Interface widths (ports of spec_unit).
@@ -39,9 +58,23 @@ struct Format {
     int interp_frac = 10;
     int delta_w = 10;
 
+    // ROM 9's contents and the table set (docs/tuned.md). The default is the patent: Taylor scale sqrt(n/k),
+    // tables k = 1, 2, 4, 16, chosen by decoder 10's gates. Any other table set, and tuned mode, put the table
+    // index into ROM 9's word above the scale (decoder_rom()); ROM 12 holds the tables in the order given,
+    // padded with zero tables up to 2^tsel_w().
+    Mode mode = Mode::patent;
+    std::vector<int> tables = patent_tables();   // k of each ROM 12 table, strictly increasing, 1..256
+
+    bool decoder_rom() const { return mode == Mode::tuned || tables != patent_tables(); }
+    int tsel_w() const {                                  // width of the table index (>= 1)
+        int w = 1;
+        while ((size_t(1) << w) < tables.size()) ++w;
+        return w;
+    }
+    int rom9_dw() const { return scale_w + (decoder_rom() ? tsel_w() : 0); }  // {table index, scale}
     int tbl_dw() const { return tbl_frac + 1; }
     int rom12_dw() const { return tbl_dw() + (interp ? delta_w : 0); }
-    int rom12_aw() const { return tbl_aw + 2; }          // {table index (2 bits), position (tbl_aw bits)}
+    int rom12_aw() const { return tbl_aw + tsel_w(); }    // {table index, position (tbl_aw bits)}
     int prod_frac() const { return ang_frac + scale_frac; }  // fraction bits of multiplier 11's product
     int mul13_shift() const { return c_w + tbl_frac - out_w; }
 
@@ -66,9 +99,6 @@ inline Format config_format(const std::string& name) {
     }
     throw std::invalid_argument("unknown configuration '" + name + "' (default, up5k)");
 }
-
-// The four tables of ROM 12 and the Fig. 10 rule.
-constexpr int kTables[4] = {1, 2, 4, 16};
 
 // Fig. 10 (decoder 10): n = 1 -> table 0 (k = 1); n = 2 -> table 1 (k = 2); n = 3..6 -> table 2 (k = 4);
 // every other n (0, 7..1000 and 1001..1023) -> table 3 (k = 16).

@@ -4,49 +4,20 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
+#include <tuple>
 
+#include "fit.h"
 #include "spec_format.h"
 
 namespace spec {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-// Maximum of a continuous function on [lo, hi]: dense sampling, then golden-section search
-// in the bracket around the best sample.
-double maximize(const std::function<double(double)>& f, double lo, double hi, int samples = 1024) {
-    double best = -1.0;
-    int bi = 0;
-    for (int i = 0; i <= samples; ++i) {
-        double x = lo + (hi - lo) * i / samples;
-        double v = f(x);
-        if (v > best) {
-            best = v;
-            bi = i;
-        }
-    }
-    double a = lo + (hi - lo) * std::max(0, bi - 1) / samples;
-    double b = lo + (hi - lo) * std::min(samples, bi + 1) / samples;
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double c = b - g * (b - a), d = a + g * (b - a);
-    double fc = f(c), fd = f(d);
-    for (int it = 0; it < 60; ++it) {
-        if (fc > fd) {
-            b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
-        } else {
-            a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
-        }
-    }
-    return std::max({best, fc, fd});
-}
 }  // namespace
-
-double epicentre_end(unsigned n) {
-    if (n == 0) return kPi / 2.0;
-    if (n == 1) return kPi / 3.0;
-    return std::atan(1.0 / std::sqrt(static_cast<double>(n) - 1.0));
-}
 
 double approx(unsigned n, int k, double d) {
     if (n == 0) return 1.0;
@@ -82,6 +53,52 @@ const ErrorTable& fig10_errors() {
         return e;
     }();
     return t;
+}
+
+const ErrorTable& mode_errors(const Format& f) {
+    if (f.mode == Mode::patent && f.tables == patent_tables() && f.n_w == Format().n_w) return fig10_errors();
+    using Key = std::tuple<Mode, std::vector<int>, int>;
+    static std::mutex mu;
+    static std::map<Key, std::unique_ptr<ErrorTable>> cache;
+    const std::vector<TableFit>& fits = table_fits(f);
+    std::lock_guard<std::mutex> lock(mu);
+    auto& slot = cache[Key(f.mode, f.tables, f.n_w)];
+    if (!slot) {
+        slot.reset(new ErrorTable);
+        for (unsigned n = 0; n < fits.size(); ++n) {
+            slot->q.push_back(rel_error(n, fits[n].k, fits[n].scale));
+            slot->a.push_back(abs_error(n, fits[n].k, fits[n].scale));
+        }
+    }
+    return *slot;
+}
+
+CoreErrors core_errors(const Model& m, uint32_t points, uint32_t epi_points, const SpanRunner& run) {
+    const Format& f = m.format();
+    const uint32_t craw = (1u << f.c_w) - 1;
+    const double c = std::ldexp(double(craw), -f.c_w);
+    const size_t count = size_t(1) << f.n_w;
+    CoreErrors e;
+    e.rel_in.assign(count, 0.0);
+    e.abs_all.assign(count, 0.0);
+    for (unsigned n = 0; n < count; ++n) {
+        const double end = epicentre_end(n);
+        for (int pass = 0; pass < (epi_points ? 2 : 1); ++pass) {
+            const uint32_t len = pass == 0 ? points : epi_points;
+            const double reach = pass == 0 ? kPi / 2 : end;
+            SpanRegs r{craw, m.quantize_angle(reach / double(len)), 0, n, len};
+            const std::vector<uint32_t> px = run ? run(r) : m.span(r);
+            const std::vector<int64_t> ang = m.angles(r);
+            for (size_t i = 0; i < px.size() && i < ang.size(); ++i) {
+                const double x = m.angle_value(ang[i]);
+                const double ref = c * std::pow(std::max(0.0, std::cos(x)), double(n));
+                const double err = std::fabs(m.out_value(px[i]) - ref);
+                e.abs_all[n] = std::max(e.abs_all[n], err / c);
+                if (x <= end) e.rel_in[n] = std::max(e.rel_in[n], err / ref);
+            }
+        }
+    }
+    return e;
 }
 
 std::vector<Fig8Row> fig8(double limit) {

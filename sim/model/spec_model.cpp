@@ -19,7 +19,7 @@ int64_t Model::accumulate(int64_t angle, int64_t dzeta) const {
 
 TablePos Model::mul11(int64_t angle, unsigned n) const {
     const uint64_t mag = static_cast<uint64_t>(angle < 0 ? -angle : angle);   // |register 8|, cos is even
-    const unsigned __int128 prod = static_cast<unsigned __int128>(mag) * rom9_.at(n);
+    const unsigned __int128 prod = static_cast<unsigned __int128>(mag) * scale_word(n);
     const int pf = f_.prod_frac();
     const int drop = pf - f_.tbl_aw;
     const unsigned __int128 frac = prod & ((static_cast<unsigned __int128>(1) << pf) - 1);
@@ -36,8 +36,12 @@ TablePos Model::mul11(int64_t angle, unsigned n) const {
     return p;
 }
 
+int Model::table(unsigned n) const {
+    return f_.decoder_rom() ? static_cast<int>(rom9_.at(n) >> f_.scale_w) : table_of_n(n);
+}
+
 uint64_t Model::rom12(unsigned n, const TablePos& p) const {
-    return rom12_.at((static_cast<size_t>(table_of_n(n)) << f_.tbl_aw) | p.index);
+    return rom12_.at((static_cast<size_t>(table(n)) << f_.tbl_aw) | p.index);
 }
 
 uint32_t Model::interpolate(uint64_t word, uint32_t frac) const {

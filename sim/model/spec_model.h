@@ -37,6 +37,8 @@ public:
     int64_t accumulate(int64_t angle, int64_t dzeta) const;
     // Multiplier 11 on |angle| and ROM 9's word for n.
     TablePos mul11(int64_t angle, unsigned n) const;
+    // Decoder 10: the Fig. 10 gates (patent mode with the patent's tables) or ROM 9's table field.
+    int table(unsigned n) const;
     // ROM 12 read, decoder 10 choosing the table (the whole word, with the step field when interp).
     uint64_t rom12(unsigned n, const TablePos& p) const;
     // The interpolator (interp = true): table[i] - round(delta_i * f / 2^interp_frac); else the word itself.
@@ -50,7 +52,8 @@ public:
     // Register 8's value for pixel i of the span (with saturation).
     std::vector<int64_t> angles(const SpanRegs& r) const;
 
-    uint32_t rom9_word(unsigned n) const { return rom9_.at(n); }
+    uint32_t rom9_word(unsigned n) const { return rom9_.at(n); }   // the whole word (with the table field)
+    uint32_t scale_word(unsigned n) const { return rom9_.at(n) & ((uint32_t(1) << f_.scale_w) - 1); }
     const std::vector<uint32_t>& rom9() const { return rom9_; }
     const std::vector<uint64_t>& rom12() const { return rom12_; }
 

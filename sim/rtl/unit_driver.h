@@ -1,4 +1,4 @@
-// unit_driver.h - drives the Verilated spec_unit through its ports, as an external device would.
+// unit_driver.h - drives a Verilated spec_unit through its ports, as an external device would.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 #include "spec_model.h"
 
 class Vspec_unit;
+class Vspec_unit_tuned;
 class VerilatedContext;
 class VerilatedVcdC;
 
@@ -23,15 +24,28 @@ struct CtrlSignals {
     uint32_t intensity;
 };
 
-class UnitDriver {
+// What the renderer and specsim need from a core that runs spans, whichever configuration was Verilated.
+class SpanCore {
+public:
+    virtual ~SpanCore() = default;
+    // Writes registers 1..4 and counter 5, pulses Start, returns the l + 1 pixels.
+    virtual std::vector<uint32_t> span(const SpanRegs& r) = 0;
+    // Clock cycles simulated so far.
+    virtual uint64_t cycle() const = 0;
+};
+
+// V: the Verilated spec_unit class (Vspec_unit: the patent's default; Vspec_unit_tuned: tuned mode).
+// Instantiated for both in unit_driver.cpp and unit_driver_tuned.cpp.
+template <class V>
+class UnitDriverT : public SpanCore {
 public:
     // vcd_path: write a waveform of everything that follows (empty: none).
-    explicit UnitDriver(const std::string& vcd_path = "");
-    ~UnitDriver();
-    UnitDriver(const UnitDriver&) = delete;
-    UnitDriver& operator=(const UnitDriver&) = delete;
+    explicit UnitDriverT(const std::string& vcd_path = "");
+    ~UnitDriverT() override;
+    UnitDriverT(const UnitDriverT&) = delete;
+    UnitDriverT& operator=(const UnitDriverT&) = delete;
 
-    Vspec_unit& top() { return *top_; }
+    V& top() { return *top_; }
     // One clock: the inputs as set now are sampled at the rising edge; afterwards the outputs show the
     // next cycle. Every input is returned to its idle value (strobes 0, init_n 1, len_load_n 1) after it.
     void step();
@@ -44,20 +58,28 @@ public:
     // Throws std::runtime_error on a timeout.
     std::vector<uint32_t> run(uint64_t max_cycles = 0);
     // write() then run().
-    std::vector<uint32_t> span(const SpanRegs& r) { write(r); return run(); }
+    std::vector<uint32_t> span(const SpanRegs& r) override { write(r); return run(); }
 
     CtrlSignals signals() const;
-    uint64_t cycle() const { return cycle_; }
+    uint64_t cycle() const override { return cycle_; }
     // Called after every step() with the signals of the new cycle.
     std::function<void(uint64_t cycle, const CtrlSignals&)> observer;
 
 private:
     void idle_inputs();
     std::unique_ptr<VerilatedContext> ctx_;
-    std::unique_ptr<Vspec_unit> top_;
+    std::unique_ptr<V> top_;
     std::unique_ptr<VerilatedVcdC> vcd_;
     uint64_t cycle_ = 0;
     uint64_t time_ = 0;
 };
+
+using UnitDriver = UnitDriverT<Vspec_unit>;              // the patent's configuration (rom/)
+using UnitDriverTuned = UnitDriverT<Vspec_unit_tuned>;   // tuned mode (docs/tuned.md; build-tree ROM images)
+extern template class UnitDriverT<Vspec_unit>;          // instantiated in unit_driver.cpp
+extern template class UnitDriverT<Vspec_unit_tuned>;    // and unit_driver_tuned.cpp
+
+// The Verilated spec_unit of the given mode (defined with the tuned model, unit_driver_tuned.cpp).
+std::unique_ptr<SpanCore> make_unit_driver(Mode mode, const std::string& vcd_path = "");
 
 }  // namespace spec

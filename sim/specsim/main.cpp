@@ -1,6 +1,7 @@
 // specsim - the command-line front end of the UA 71489 specular-shading core.
 //
-//   specsim span --n N --c C --zeta0 Z --dzeta D --len L [--model rtl|stream|golden|ref] [--vcd FILE]
+//   specsim span --n N --c C --zeta0 Z --dzeta D --len L [--model rtl|stream|golden|ref] [--mode patent|tuned]
+//                [--vcd FILE]
 //   specsim fig8 [--all]
 //   specsim demo [--vcd FILE] [--diagram FILE]
 //   specsim vectors --out FILE [--spans N] [--seed S]
@@ -23,6 +24,7 @@
 #include "commands.h"
 #include "spec_model.h"
 #include "Vspec_stream.h"
+#include "Vspec_stream_tuned.h"
 #include "stream_driver.h"
 #include "unit_driver.h"
 
@@ -43,6 +45,8 @@ const char* kUsage =
     "           --model M    rtl (Verilated spec_unit, default) | stream (Verilated spec_stream) |\n"
     "                        golden (bit-exact C++ model) |\n"
     "                        ref (double precision C * max(0, cos(zeta0 + i*dzeta))^n)\n"
+    "           --mode M     patent (default: ROM 9 holds sqrt(n/k), Fig. 10 decoder) | tuned (minimax scale and\n"
+    "                        table in ROM 9, the RTL Verilated with DECODER_ROM = 1; docs/tuned.md)\n"
     "           --vcd FILE   with --model rtl: write a waveform of the run\n"
     "  fig8     the recomputed Fig. 8 table and q(n), a(n) for the Fig. 10 rule (--all: every n)\n"
     "  demo     the Fig. 11/12 span and representative spans through the RTL beside the double reference\n"
@@ -53,15 +57,26 @@ const char* kUsage =
     "           --model golden|rtl (default golden; equal bit for bit)  --points P (100..100000, default 4000)\n"
     "           --tbl-aw N   (golden only) model a ROM 12 of 2^N positions per table instead of the default\n"
     "           --config C   (golden only) default | up5k (interpolated 4 x 256 tables, docs/stream.md)\n"
+    "           --mode M     patent (default) | tuned (docs/tuned.md)\n"
+    "           --tables K,K,...  (golden only) ROM 12's powers k instead of 1,2,4,16 (table in ROM 9)\n"
     "  vectors  test vectors from the bit-exact model for the Icarus testbench\n"
-    "           --out FILE --spans N (1..5000, default 200) --seed S\n";
+    "           --out FILE --spans N (1..5000, default 200) --seed S --mode patent|tuned --tables K,K,...\n";
 
 struct SpanArgs {
     SpanRegs regs;
     double c = 0, zeta0 = 0, dzeta = 0;
     std::string model = "rtl";
     std::string vcd;
+    Mode mode = Mode::patent;
 };
+
+Mode parse_mode_flag(const std::string& fl, const std::string& v) {
+    try {
+        return parse_mode(v);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(fl + ": " + e.what());
+    }
+}
 
 SpanArgs parse_span(int argc, char** argv) {
     const Model m;
@@ -99,6 +114,8 @@ SpanArgs parse_span(int argc, char** argv) {
             }
         } else if (fl == "--vcd") {
             s.vcd = a.value(fl);
+        } else if (fl == "--mode") {
+            s.mode = parse_mode_flag(fl, a.value(fl));
         } else {
             throw UsageError("span: unknown option " + fl);
         }
@@ -129,7 +146,9 @@ std::string fmt_out(const Format& f, uint32_t raw) {
 
 int cmd_span(int argc, char** argv) {
     SpanArgs s = parse_span(argc, argv);
-    const Model m;
+    Format fmt;
+    fmt.mode = s.mode;
+    const Model m(fmt);
     std::ostringstream o;
     o << "i,value\n";
     if (s.model == "ref") {
@@ -143,12 +162,13 @@ int cmd_span(int argc, char** argv) {
         if (s.model == "golden") {
             px = m.span(s.regs);
         } else if (s.model == "stream") {
-            StreamDriver<Vspec_stream> d;
             std::mt19937_64 rng(1);
-            for (const StreamPixel& p : d.run({s.regs}, Stalls{}, rng)) px.push_back(p.value);
+            std::vector<StreamPixel> out;
+            if (s.mode == Mode::tuned) out = StreamDriver<Vspec_stream_tuned>().run({s.regs}, Stalls{}, rng);
+            else out = StreamDriver<Vspec_stream>().run({s.regs}, Stalls{}, rng);
+            for (const StreamPixel& p : out) px.push_back(p.value);
         } else {
-            UnitDriver d(s.vcd);
-            px = d.span(s.regs);
+            px = make_unit_driver(s.mode, s.vcd)->span(s.regs);
         }
         if (px.size() != size_t(s.regs.len) + 1) {
             throw std::runtime_error("the core produced " + std::to_string(px.size()) + " pixels, expected " +
@@ -271,37 +291,39 @@ int cmd_accuracy(int argc, char** argv) {
             fmt.tbl_aw = static_cast<int>(parse_int(fl, a.value(fl), 4, 16));
         } else if (fl == "--config") {
             try {
+                const Mode mode = fmt.mode;
+                const std::vector<int> tables = fmt.tables;
                 fmt = config_format(a.value(fl));
+                fmt.mode = mode;
+                fmt.tables = tables;
             } catch (const std::invalid_argument& e) {
                 throw UsageError(std::string("--config: ") + e.what());
             }
+        } else if (fl == "--mode") {
+            fmt.mode = parse_mode_flag(fl, a.value(fl));
+        } else if (fl == "--tables") {
+            fmt.tables = parse_tables(fl, a.value(fl));
         } else {
             throw UsageError("accuracy: unknown option " + fl);
         }
     }
-    if (model == "rtl" && (fmt.tbl_aw != Format().tbl_aw || fmt.interp)) {
-        throw UsageError("--tbl-aw, --config: only with --model golden");
+    if (model == "rtl" && (fmt.tbl_aw != Format().tbl_aw || fmt.interp || fmt.tables != patent_tables())) {
+        throw UsageError("--tbl-aw, --config, --tables: only with --model golden");
+    }
+    try {
+        fmt.validate();
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("accuracy: ") + e.what());
     }
     const Model m(fmt);
     const Format& f = m.format();
-    const ErrorTable& e = fig10_errors();
-    std::unique_ptr<UnitDriver> d;
-    if (model == "rtl") d.reset(new UnitDriver);
-    const uint32_t craw = (1u << f.c_w) - 1;
-    const double c = std::ldexp(double(craw), -f.c_w);
-    std::vector<double> rel_in(1024, 0.0), abs_all(1024, 0.0);
-    for (unsigned n = 0; n < 1024; ++n) {
-        SpanRegs r{craw, m.quantize_angle((M_PI / 2) / double(points)), 0, n, static_cast<uint32_t>(points)};
-        const std::vector<uint32_t> px = d ? d->span(r) : m.span(r);
-        const std::vector<int64_t> ang = m.angles(r);
-        for (size_t i = 0; i < px.size(); ++i) {
-            const double x = m.angle_value(ang[i]);
-            const double ref = c * std::pow(std::max(0.0, std::cos(x)), double(n));
-            const double err = std::fabs(m.out_value(px[i]) - ref);
-            abs_all[n] = std::max(abs_all[n], err / c);
-            if (x <= epicentre_end(n)) rel_in[n] = std::max(rel_in[n], err / ref);
-        }
-    }
+    const ErrorTable& e = mode_errors(f);
+    std::unique_ptr<SpanCore> d;
+    if (model == "rtl") d = make_unit_driver(f.mode);
+    const CoreErrors ce = core_errors(m, static_cast<uint32_t>(points), 0,
+                                      d ? SpanRunner([&](const SpanRegs& r) { return d->span(r); }) : SpanRunner());
+    const std::vector<double>& rel_in = ce.rel_in;
+    const std::vector<double>& abs_all = ce.abs_all;
     struct Range {
         const char* name;
         unsigned lo, hi;
@@ -309,9 +331,12 @@ int cmd_accuracy(int argc, char** argv) {
     } ranges[] = {{"n = 1 (cos)", 1, 1, "<= 1 %"},          {"n = 2 (cos^2)", 2, 2, "<= 1 %"},
                   {"n = 3..6 (cos^4)", 3, 6, "<= 1 %"},      {"n = 7..1000 (cos^16)", 7, 1000, "<= 1 %, <= 0.6 % (n >= 6)"},
                   {"n = 1001..1023 (cos^16)", 1001, 1023, "-"}, {"n = 0 (C)", 0, 0, "-"}};
-    std::printf("Core (%s model, ROM 12 with 2^%d positions per table%s, %lld points per n on [0, pi/2], "
-                "C = 1 - 2^-16)\nagainst double precision\n\n",
-                model.c_str(), f.tbl_aw, f.interp ? " and interpolation" : "", points);
+    std::string tables;
+    for (int k : f.tables) tables += (tables.empty() ? "" : ", ") + std::to_string(k);
+    std::printf("Core (%s model, %s mode, tables k = %s, ROM 12 with 2^%d positions per table%s, %lld points per n "
+                "on [0, pi/2], C = 1 - 2^-16)\nagainst double precision\n\n",
+                model.c_str(), mode_name(f.mode), tables.c_str(), f.tbl_aw, f.interp ? " and interpolation" : "",
+                points);
     std::printf("| BRDF range | patent's claim | approximation q (double) | core, max rel. error in epicentre |"
                 " approximation a (double) | core, max abs. error / C on [0, pi/2] |\n"
                 "|---|---|---|---|---|---|\n");
@@ -340,16 +365,19 @@ int cmd_accuracy(int argc, char** argv) {
 int cmd_vectors(int argc, char** argv) {
     std::string out;
     long long spans = 200, seed = 1;
+    Format fmt;
     Args a(argc, argv, 2);
     while (!a.done()) {
         std::string fl = a.flag();
         if (fl == "--out") out = a.value(fl);
         else if (fl == "--spans") spans = parse_int(fl, a.value(fl), 1, 5000);
         else if (fl == "--seed") seed = parse_int(fl, a.value(fl), 0, 1LL << 40);
+        else if (fl == "--mode") fmt.mode = parse_mode_flag(fl, a.value(fl));
+        else if (fl == "--tables") fmt.tables = parse_tables(fl, a.value(fl));
         else throw UsageError("vectors: unknown option " + fl);
     }
     if (out.empty()) throw UsageError("vectors: --out is required");
-    const Model m;
+    const Model m(fmt);
     std::mt19937_64 rng(static_cast<uint64_t>(seed));
     std::ostringstream o;
     char buf[32];
