@@ -13,6 +13,8 @@
 #               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed)
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
+#   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
+#   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -20,7 +22,7 @@ RTL := $(wildcard rtl/*.v)
 RTL_TOPS := $(basename $(notdir $(RTL)))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render synth deps-synth fusesoc plots images
+        bench-render synth deps-synth fusesoc plots images compare tables
 
 all: build
 
@@ -51,6 +53,10 @@ lint: deps
 	@for top in $(RTL_TOPS); do \
 	    verilator --lint-only -Wall -Irom -Irtl $(RTL) --top-module $$top || exit 1; \
 	    echo "  $$top: clean"; \
+	done
+	@for top in spec_unit spec_stream; do \
+	    verilator --lint-only -Wall -Irom -Irtl $(RTL) --top-module $$top -GDECODER_ROM=1 -GTSEL_W=3 || exit 1; \
+	    echo "  $$top with ROM 9's table field (DECODER_ROM = 1, TSEL_W = 3): clean"; \
 	done
 	@syn/ice40_smoke.sh $(BUILD)/syn
 
@@ -94,6 +100,16 @@ images: build
 	    --panel docs/img/panel.png
 	$(BUILD)/specsim plots --out-dir $(BUILD)/img_plots
 	cp $(BUILD)/img_plots/fig5.png $(BUILD)/img_plots/fig9.png docs/img/
+
+# Tuned mode and other table sets (docs/tuned.md)
+compare: build
+	$(BUILD)/specsim compare
+
+tables: build
+	@mkdir -p docs/img
+	$(BUILD)/specsim tables --out-dir $(BUILD)/tables
+	cp $(BUILD)/tables/tables.md docs/tables.md
+	cp $(BUILD)/tables/tables.png docs/img/tables.png
 
 bench-render: build
 	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5

@@ -336,3 +336,45 @@ TEST(TunedSpecsim, SpanModesAgreeAndDiffer) {
         EXPECT_TRUE(r.out.empty()) << bad;
     }
 }
+
+// specsim tables --quick makes the files and its rows are rows of the committed docs/tables.md (make tables),
+// so the table README quotes is the one the code makes now.
+TEST(TunedSpecsim, TablesQuickRowsMatchCommittedDocs) {
+    const std::string dir = ::testing::TempDir() + "/tables_quick." + std::to_string(getpid());
+    const Result r = run_specsim("tables --quick --out-dir " + dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* f : {"tables.md", "tables.csv", "tables.dat", "tables.gp", "tables.png"}) {
+        FILE* fp = std::fopen((dir + "/" + f).c_str(), "rb");
+        ASSERT_NE(fp, nullptr) << f;
+        std::fseek(fp, 0, SEEK_END);
+        EXPECT_GT(std::ftell(fp), 100) << f;
+        std::fclose(fp);
+    }
+    std::string doc;
+    {
+        FILE* fp = std::fopen((std::string(SPEC_SOURCE_DIR) + "/docs/tables.md").c_str(), "rb");
+        ASSERT_NE(fp, nullptr) << "docs/tables.md (make tables)";
+        char buf[4096];
+        size_t k;
+        while ((k = std::fread(buf, 1, sizeof buf, fp)) > 0) doc.append(buf, k);
+        std::fclose(fp);
+    }
+    size_t rows = 0, pos = 0;
+    while ((pos = r.out.find("\n| ", pos)) != std::string::npos) {
+        const size_t end = r.out.find('\n', pos + 1);
+        const std::string row = r.out.substr(pos + 1, end - pos - 1);
+        pos = end;
+        if (row.find(" x 2^") == std::string::npos) continue;  // header
+        EXPECT_NE(doc.find(row), std::string::npos) << "not in docs/tables.md (run make tables): " << row;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 12u);
+    EXPECT_NE(r.out.find("| 1,2,4,16 | tuned | 4 x 2^12 x 17 | 1024 x 20 |"), std::string::npos);
+    for (const char* bad : {"tables", "tables --out-dir", "tables --out-dir /tmp --fast", "compare --points 5",
+                            "compare --bogus 1"}) {
+        const Result b = run_specsim(bad);
+        EXPECT_EQ(b.code, 2) << bad;
+        EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << bad << ": " << b.err;
+    }
+    std::system(("rm -rf '" + dir + "'").c_str());
+}

@@ -76,13 +76,15 @@ Shading shade_base(const Scene& sc, const Frame& f) {
 }
 
 SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode rgb, host::GammaRule rule,
-                       const Progress& progress) {
+                       const Progress& progress, Mode mode) {
     const auto t0 = std::chrono::steady_clock::now();
     SpecRun r;
     r.spec.assign(size_t(f.w) * size_t(f.h) * 3, 0.0f);
-    const Model core;
-    std::unique_ptr<UnitDriver> drv;
-    if (model == SpecModel::rtl) drv.reset(new UnitDriver);
+    Format fmt;
+    fmt.mode = mode;
+    const Model core(fmt);
+    std::unique_ptr<SpanCore> drv;
+    if (model == SpecModel::rtl) drv = make_unit_driver(mode);
     const uint64_t cycle0 = drv ? drv->cycle() : 0;
     const bool per_channel = rgb == RgbMode::per_channel && (model == SpecModel::rtl || model == SpecModel::golden);
     std::vector<double> val;

@@ -55,8 +55,11 @@ struct SpecRun {
 };
 
 using Progress = std::function<void(size_t done, size_t total)>;
+// mode: what ROM 9 holds for the rtl and golden models (patent: sqrt(n/k), Fig. 10; tuned: minimax scale and
+// table, docs/tuned.md); the other models do not use the core.
 SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel m, RgbMode rgb,
-                       host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {});
+                       host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
+                       Mode mode = Mode::patent);
 
 // base + spec, clamped to [0, 1], rounded to 8 bits.
 Image compose(const Shading& s, const SpecRun& r);

@@ -33,6 +33,7 @@ const char* const kRenderUsage =
     "           --model M      rtl (Verilated spec_unit, default) | golden (bit-exact model) |\n"
     "                          ref (double, exact Blinn-Phong for the interpolated vectors) |\n"
     "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n)\n"
+    "           --mode M       patent (default) | tuned: ROM 9 of the rtl and golden models (docs/tuned.md)\n"
     "           --out FILE     the rendered PNG (required)\n"
     "           --panel FILE   also render ref and prototype: PNG of ref | model | prototype | error maps\n"
     "           --stats FILE   also render ref, prototype, host: errors against ref as JSON\n"
@@ -73,6 +74,7 @@ struct RenderArgs {
     std::string scene = "default", obj, out, panel, stats;
     int size = 512;
     render::SpecModel model = render::SpecModel::rtl;
+    Mode mode = Mode::patent;
     render::RgbMode rgb = render::RgbMode::once;
     host::GammaRule gamma = host::GammaRule::patent;
     double amp = 16;
@@ -100,6 +102,12 @@ RenderArgs parse_render(int argc, char** argv) {
         else if (f == "--obj") r.obj = a.value(f);
         else if (f == "--size") r.size = int(parse_int(f, a.value(f), 16, 4096));
         else if (f == "--model") r.model = render::parse_model(a.value(f));
+        else if (f == "--mode") {
+            const std::string m = a.value(f);
+            if (m == "patent") r.mode = Mode::patent;
+            else if (m == "tuned") r.mode = Mode::tuned;
+            else throw UsageError("--mode: '" + m + "' is not patent or tuned");
+        }
         else if (f == "--out") r.out = a.value(f);
         else if (f == "--panel") r.panel = a.value(f);
         else if (f == "--stats") r.stats = a.value(f);
@@ -238,7 +246,8 @@ int cmd_render(int argc, char** argv) {
         ModelResult r;
         r.model = m;
         ProgressBar pb(bar && m == ra.model, render::model_name(m));
-        r.run = render::shade_specular(sc, frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); });
+        r.run = render::shade_specular(sc, frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); },
+                                       ra.mode);
         r.img = render::compose(base, r.run);
         res.push_back(std::move(r));
         if (m == ra.model) render::write_png(ra.out, res.back().img);
@@ -256,7 +265,8 @@ int cmd_render(int argc, char** argv) {
                 (unsigned long long)hc.spans, (unsigned long long)hc.flat, (unsigned long long)hc.opposite,
                 (unsigned long long)hc.no_highlight, (unsigned long long)hc.c_saturated,
                 (unsigned long long)hc.gamma_fallback);
-    std::printf("%s: %llu pixels through the model in %.2f s (%.3g pixels/s)", render::model_name(main.model),
+    std::printf("%s%s: %llu pixels through the model in %.2f s (%.3g pixels/s)", render::model_name(main.model),
+                ra.mode == Mode::tuned ? " (tuned mode)" : "",
                 (unsigned long long)main.run.core_pixels, main.run.seconds,
                 double(main.run.core_pixels) / std::max(1e-9, main.run.seconds));
     if (main.model == render::SpecModel::rtl) {
@@ -289,10 +299,11 @@ int cmd_render(int argc, char** argv) {
         const render::Image em = render::error_map(pm->img, *ref, ra.amp);
         const render::Image ep = render::error_map(*proto, *ref, ra.amp);
         const std::string amp = fmt("%g", ra.amp);
-        const std::string mname = render::model_name(ra.model);
+        const std::string mname =
+            std::string(render::model_name(ra.model)) + (ra.mode == Mode::tuned ? " (tuned)" : "");
         std::vector<render::Tile> tiles{
             {ref, "ref", "double precision"},
-            {&pm->img, mname, mname == "rtl" ? "Verilated spec_unit" : ""},
+            {&pm->img, mname, ra.model == render::SpecModel::rtl ? "Verilated spec_unit" : ""},
             {proto, "prototype", "cos^2(sqrt(n/2) d)"},
             {&em, "error of " + mname + " x" + amp, "max " + std::to_string(pm->st.max_abs) + " levels of 255"},
             {&ep, "error of prototype x" + amp, "max " + std::to_string(pp->st.max_abs) + " levels of 255"},
@@ -306,7 +317,7 @@ int cmd_render(int argc, char** argv) {
     if (!ra.stats.empty()) {
         std::ostringstream j;
         j << "{\n  \"scene\": \"" << sc.name << "\",\n  \"size\": " << ra.size << ",\n  \"model\": \""
-          << render::model_name(ra.model) << "\",\n  \"rgb\": \""
+          << render::model_name(ra.model) << "\",\n  \"mode\": \"" << mode_name(ra.mode) << "\",\n  \"rgb\": \""
           << (ra.rgb == render::RgbMode::once ? "once" : "per-channel") << "\",\n  \"host_gamma\": \""
           << (ra.gamma == host::GammaRule::patent ? "patent" : "midpoint") << "\",\n";
         j << "  \"triangles\": " << frame.triangles << ",\n  \"spans\": " << frame.spans.size()

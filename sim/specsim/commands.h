@@ -13,8 +13,12 @@ int cmd_export_obj(int argc, char** argv);    // specsim export-obj: a built-in 
 int cmd_bench_stream(int argc, char** argv);  // specsim bench-stream: cycles/pixel and simulation speed (cmd_bench.cpp)
 int cmd_stream_diagram(int argc, char** argv);  // specsim stream-diagram: AXI timing from a simulation (cmd_bench.cpp)
 
+int cmd_compare(int argc, char** argv);  // specsim compare: patent vs tuned vs prototype per BRDF range (cmd_tuned.cpp)
+int cmd_tables(int argc, char** argv);   // specsim tables: table sets and sizes against ROM bits (cmd_tuned.cpp)
+
 // The usage lines of these commands, for specsim --help.
 extern const char* const kRenderUsage;
 extern const char* const kBenchUsage;
+extern const char* const kTunedUsage;
 
 }  // namespace spec

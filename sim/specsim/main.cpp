@@ -420,7 +420,7 @@ int main(int argc, char** argv) {
         if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::cout << kUsage << kRenderUsage << kBenchUsage;
+            std::cout << kUsage << kRenderUsage << kBenchUsage << kTunedUsage;
             return 0;
         }
         if (cmd == "span") return cmd_span(argc, argv);
@@ -434,6 +434,8 @@ int main(int argc, char** argv) {
         if (cmd == "stream-diagram") return cmd_stream_diagram(argc, argv);
         if (cmd == "plots") return cmd_plots(argc, argv);
         if (cmd == "export-obj") return cmd_export_obj(argc, argv);
+        if (cmd == "compare") return cmd_compare(argc, argv);
+        if (cmd == "tables") return cmd_tables(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
     } catch (const UsageError& e) {
         std::cerr << "specsim: " << e.what() << "\n";
