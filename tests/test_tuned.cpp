@@ -378,3 +378,21 @@ TEST(TunedSpecsim, TablesQuickRowsMatchCommittedDocs) {
     }
     std::system(("rm -rf '" + dir + "'").c_str());
 }
+
+// Fig. 8 with the minimax scale: table k = 4 alone keeps the relative error within 1 % for n = 2..1000
+// (with sqrt(n/k) only for n = 4..6), and the two tables {1, 4} meet the patent's 1 % claim for every n.
+TEST(TunedFit, OneTableCoversFarMoreN) {
+    for (unsigned n = 2; n <= 1000; ++n) {
+        double q;
+        minimax_scale(n, 4, &q);
+        ASSERT_LE(q, 0.01) << n;
+    }
+    EXPECT_GT(q_error(3, 4), 0.01);
+    EXPECT_GT(q_error(7, 4), 0.01);
+    Format f;
+    f.mode = Mode::tuned;
+    f.tables = {1, 4};
+    const ErrorTable& e = mode_errors(f);
+    for (unsigned n = 0; n < 1024; ++n) EXPECT_LE(e.q[n], 0.0075) << n;
+    EXPECT_GT(e.q[2], 0.007);
+}

@@ -101,13 +101,16 @@ CoreErrors core_errors(const Model& m, uint32_t points, uint32_t epi_points, con
     return e;
 }
 
-std::vector<Fig8Row> fig8(double limit) {
+std::vector<Fig8Row> fig8(double limit, Mode mode) {
     std::vector<Fig8Row> rows;
     for (int k = 1; k <= 16; ++k) {
         Fig8Row r{k, 0, 0, true, 0};
         int last = 0;
         for (int n = 1; n <= 1000; ++n) {
-            if (q_error(unsigned(n), k) <= limit) {
+            double q;
+            if (mode == Mode::tuned) minimax_scale(unsigned(n), k, &q);
+            else q = q_error(unsigned(n), k);
+            if (q <= limit) {
                 if (r.count == 0) r.n_lo = n;
                 else if (n != last + 1) r.contiguous = false;
                 r.n_hi = n;
@@ -120,31 +123,41 @@ std::vector<Fig8Row> fig8(double limit) {
     return rows;
 }
 
-std::string fig8_report(bool all_n) {
+std::string fig8_report(bool all_n, Mode mode) {
+    const bool tuned = mode == Mode::tuned;
     static const char* patent[17] = {"",      "1",      "2",       "3..4",    "3..6",    "4..10",
                                      "4..17", "5..33",  "5..105",  "6..1000", "6..1000", "6..1000",
                                      "6..1000", "6..1000", "6..1000", "6..1000", "7..1000"};
     std::ostringstream o;
     char buf[256];
-    o << "Fig. 8 recomputed: n in 1..1000 for which cos^k(sqrt(n/k) d) stays within 1 % of cos^n(d)\n"
-      << "over the epicentre [0, atan(1/sqrt(n-1))] (n = 1: [0, pi/3]), double precision.\n\n"
-      << "   k | n with q <= 1 % (computed) | patent Fig. 8\n"
+    if (tuned) {
+        o << "Fig. 8 with the minimax scale (tuned mode): n in 1..1000 for which cos^k(s d), s the minimax scale\n"
+          << "for n and k, stays within 1 % of cos^n(d) over the epicentre [0, atan(1/sqrt(n-1))] (n = 1: [0, pi/3]),\n"
+          << "double precision; the patent's column is for s = sqrt(n/k).\n\n";
+    } else {
+        o << "Fig. 8 recomputed: n in 1..1000 for which cos^k(sqrt(n/k) d) stays within 1 % of cos^n(d)\n"
+          << "over the epicentre [0, atan(1/sqrt(n-1))] (n = 1: [0, pi/3]), double precision.\n\n";
+    }
+    o << "   k | n with q <= 1 % (computed) | patent Fig. 8\n"
       << "-----+----------------------------+--------------\n";
-    for (const auto& r : fig8(0.01)) {
+    for (const auto& r : fig8(0.01, mode)) {
         std::string range = r.count == 0 ? "none"
                                          : std::to_string(r.n_lo) + ".." + std::to_string(r.n_hi) +
                                                (r.contiguous ? "" : " (with gaps)");
         std::snprintf(buf, sizeof buf, "  %2d | %-26s | %s\n", r.k, range.c_str(), patent[r.k]);
         o << buf;
     }
-    const ErrorTable& e = fig10_errors();
+    Format fmt;
+    fmt.mode = mode;
+    const ErrorTable& e = mode_errors(fmt);
     struct Range {
         const char* name;
         unsigned lo, hi;
     } ranges[] = {{"n = 1      (k = 1)", 1, 1},       {"n = 2      (k = 2)", 2, 2},
                   {"n = 3..6   (k = 4)", 3, 6},       {"n = 7..1000 (k = 16)", 7, 1000},
                   {"n = 1001..1023 (k = 16)", 1001, 1023}, {"n = 1..1000 (all)", 1, 1000}};
-    o << "\nFig. 10 rule (k = 1, 2, 4, 16): worst errors per BRDF range\n"
+    o << (tuned ? "\nTuned mode (tables k = 1, 2, 4, 16, minimax scale and table per n): worst errors per BRDF range\n"
+                : "\nFig. 10 rule (k = 1, 2, 4, 16): worst errors per BRDF range\n")
       << "  range                    | q(n) max rel. in epicentre (at n) | a(n) max abs. on [0, pi/2] (at n)\n"
       << "  -------------------------+-----------------------------------+----------------------------------\n";
     for (const auto& r : ranges) {
@@ -162,14 +175,14 @@ std::string fig8_report(bool all_n) {
     unsigned worst6 = 6;
     for (unsigned n = 6; n <= 1000; ++n) if (e.q[n] > e.q[worst6]) worst6 = n;
     std::snprintf(buf, sizeof buf,
-                  "\nPatent's claims: q <= 1 %% for n = 1..1000 -> %u value(s) of n exceed 1 %%;\n"
+                  "\n%s: q <= 1 %% for n = 1..1000 -> %u value(s) of n exceed 1 %%;\n"
                   "                 q <= 0.6 %% for n >= 6    -> worst for n >= 6 is %.4f %% at n = %u.\n",
-                  over, 100.0 * e.q[worst6], worst6);
+                  tuned ? "Patent's claims, tuned" : "Patent's claims", over, 100.0 * e.q[worst6], worst6);
     o << buf;
     if (all_n) {
         o << "\n   n   k   q(n) %     a(n) %   epicentre end (rad)\n";
         for (unsigned n = 0; n < 1024; ++n) {
-            std::snprintf(buf, sizeof buf, "%4u %3d %9.5f %9.5f %10.6f\n", n, k_of_n(n), 100.0 * e.q[n],
+            std::snprintf(buf, sizeof buf, "%4u %3d %9.5f %9.5f %10.6f\n", n, table_fits(fmt)[n].k, 100.0 * e.q[n],
                           100.0 * e.a[n], epicentre_end(n));
             o << buf;
         }

@@ -48,9 +48,10 @@ struct Fig8Row {
     bool contiguous;    // every n between n_lo and n_hi qualifies
     int count;
 };
-std::vector<Fig8Row> fig8(double limit = 0.01);
+// mode = tuned: each table with the minimax scale for each n (fit.h) instead of sqrt(n/k).
+std::vector<Fig8Row> fig8(double limit = 0.01, Mode mode = Mode::patent);
 
 // The report `specsim fig8` prints.
-std::string fig8_report(bool all_n);
+std::string fig8_report(bool all_n, Mode mode = Mode::patent);
 
 }  // namespace spec

@@ -183,8 +183,14 @@ int cmd_tables(int argc, char** argv) {
     std::filesystem::create_directories(dir, ec);
     if (ec) throw std::runtime_error("cannot create " + dir + ": " + ec.message());
 
-    std::vector<std::vector<int>> sets = {{2},          {1, 2, 4, 16},          {1, 2, 4, 8, 16},
-                                          {1, 2, 3, 4, 8, 16}, {1, 2, 4, 16, 64}, {1, 2, 4, 8, 16, 32, 64},
+    std::vector<std::vector<int>> sets = {{2},
+                                          {1, 4},
+                                          {1, 2, 16},
+                                          {1, 2, 4, 16},
+                                          {1, 2, 4, 8, 16},
+                                          {1, 2, 3, 4, 8, 16},
+                                          {1, 2, 4, 16, 64},
+                                          {1, 2, 4, 8, 16, 32, 64},
                                           {1, 2, 3, 4, 8, 16, 32, 64}};
     std::vector<int> plain = {8, 9, 10, 11, 12, 13}, interp = {6, 7, 8};
     if (quick) {
@@ -251,7 +257,8 @@ int cmd_tables(int argc, char** argv) {
     }
     // gnuplot data: one block per (mode, set, plain/interp), in the order the script plots them
     std::ostringstream plot_patent, plot_tuned;
-    const char* colors[] = {"#7f7f7f", "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"};
+    const char* colors[] = {"#7f7f7f", "#bcbd22", "#17becf", "#1f77b4", "#ff7f0e",
+                            "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"};
     int block = 0;
     for (Mode mode : {Mode::patent, Mode::tuned}) {
         std::ostringstream& pl = mode == Mode::patent ? plot_patent : plot_tuned;
@@ -268,7 +275,7 @@ int cmd_tables(int argc, char** argv) {
                 dat << "\n\n";
                 pl << (pl.tellp() > 0 ? ", \\\n     " : "plot ") << "'tables.dat' index " << block
                    << " u 1:2 w lp lw 2 pt " << (pass ? 6 : 7) << " dt " << (pass ? 2 : 1) << " lc rgb '"
-                   << colors[s % 8] << "' t '"
+                   << colors[s % 10] << "' t '"
                    << (pass ? "  interpolated" : "k = " + tables_name(sets[s]) + (sets[s].size() == 1 ? " (prototype)" : ""))
                    << "'";
                 ++block;

@@ -49,6 +49,7 @@ const char* kUsage =
     "                        table in ROM 9, the RTL Verilated with DECODER_ROM = 1; docs/tuned.md)\n"
     "           --vcd FILE   with --model rtl: write a waveform of the run\n"
     "  fig8     the recomputed Fig. 8 table and q(n), a(n) for the Fig. 10 rule (--all: every n)\n"
+    "           --mode tuned: the same with the minimax scale (docs/tuned.md)\n"
     "  demo     the Fig. 11/12 span and representative spans through the RTL beside the double reference\n"
     "           --vcd FILE      waveform of the Fig. 11 run\n"
     "           --diagram FILE  text timing diagram of the Fig. 11 run\n"
@@ -182,13 +183,15 @@ int cmd_span(int argc, char** argv) {
 
 int cmd_fig8(int argc, char** argv) {
     bool all = false;
+    Mode mode = Mode::patent;
     Args a(argc, argv, 2);
     while (!a.done()) {
         std::string fl = a.flag();
         if (fl == "--all") all = true;
+        else if (fl == "--mode") mode = parse_mode_flag(fl, a.value(fl));
         else throw UsageError("fig8: unknown option " + fl);
     }
-    std::cout << fig8_report(all);
+    std::cout << fig8_report(all, mode);
     return 0;
 }
 
