@@ -99,6 +99,7 @@ Frame rasterize(const Scene& sc, int w, int h) {
             // point as seen from the eye), take H = N's direction so that nothing is undefined.
             s.h = glm::length(hv) > 1e-12 ? glm::normalize(hv) : s.n;
         }
+        f.flipped.resize(tri_base + m.tri.size(), 0);
         for (size_t t = 0; t < m.tri.size(); ++t) {
             const auto& tr = m.tri[t];
             ScreenVertex v[3] = {sv[tr[0]], sv[tr[1]], sv[tr[2]]};
@@ -113,6 +114,7 @@ Frame rasterize(const Scene& sc, int w, int h) {
                 // seen from behind (counter-clockwise in world = clockwise on a y-down screen is the front):
                 // two-sided lighting, the normals face the viewer
                 ++f.back_facing;
+                f.flipped[tri_base + t] = 1;
                 for (auto& x : v) x.n = -x.n;
             }
             raster_triangle(f, all, v, tri_base + uint32_t(t), uint32_t(o));

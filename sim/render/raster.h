@@ -34,6 +34,7 @@ struct Frame {
     uint64_t skipped_near = 0;     // triangles with a vertex behind the camera's near plane (not drawn)
     uint64_t back_facing = 0;      // triangles seen from behind (drawn with their normals reversed)
     uint64_t hidden_spans = 0;     // spans entirely behind other surfaces (not sent to the core)
+    std::vector<uint8_t> flipped;  // per triangle id: 1 if drawn from behind (normals reversed)
 
     bool visible(const Span& s, uint32_t i) const {
         return tri_id[size_t(s.y) * size_t(w) + size_t(s.x0) + i] == int32_t(s.tri);

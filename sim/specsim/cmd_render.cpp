@@ -22,6 +22,7 @@
 #include "scene.h"
 #include "shade.h"
 #include "stats.h"
+#include "highlight.h"
 
 namespace spec {
 
@@ -43,6 +44,8 @@ const char* const kRenderUsage =
     "           --host RULE    patent (gamma = angle(H1, H2'), eq. 4; default) | midpoint (gamma fitted to\n"
     "                          N.H at the span's middle too: exact when N.H is a sinusoid, docs/host.md)\n"
     "           --progress / --quiet   progress bar on stderr (default: when stderr is a terminal)\n"
+    "           --cull-specular  the chosen model skips triangles where a bound on N.H shows the core would output\n"
+    "                          0 (companion paper A; the image is unchanged; docs/methods.md)\n"
     "           light:    --light-dir X,Y,Z (toward the light)  --light-color R,G,B  --light-intensity Is\n"
     "                     --ambient R,G,B\n"
     "           material (every object; an OBJ gets these): --n N (0..1023)  --ks K  --kd K  --ka K\n"
@@ -79,6 +82,7 @@ struct RenderArgs {
     host::GammaRule gamma = host::GammaRule::patent;
     double amp = 16;
     int progress = -1;  // -1: when stderr is a terminal
+    bool cull = false;  // --cull-specular
     // overrides
     bool has_light_dir = false, has_light_color = false, has_intensity = false, has_ambient = false;
     dvec3 light_dir, light_color, ambient;
@@ -126,6 +130,7 @@ RenderArgs parse_render(int argc, char** argv) {
             else throw UsageError("--host: '" + m + "' is not patent or midpoint");
         } else if (f == "--progress") r.progress = 1;
         else if (f == "--quiet") r.progress = 0;
+        else if (f == "--cull-specular") r.cull = true;
         else if (f == "--light-dir") { r.light_dir = parse_vec3(f, a.value(f)); r.has_light_dir = true; }
         else if (f == "--light-color") { r.light_color = parse_vec3(f, a.value(f)); r.has_light_color = true; }
         else if (f == "--light-intensity") { r.intensity = parse_double(f, a.value(f)); r.has_intensity = true; }
@@ -241,12 +246,27 @@ int cmd_render(int argc, char** argv) {
                 sc.name.c_str(), ra.size, ra.size, sc.objects.size(), (unsigned long long)frame.triangles,
                 frame.spans.size(), (unsigned long long)frame.hidden_spans);
     std::fflush(stdout);
+    // --cull-specular (companion paper A, docs/methods.md): the chosen model's specular pass runs on the spans of
+    // the triangles whose N.H bound lets the core output anything; diffuse and the comparison models see all
+    render::Frame culled;
+    if (ra.cull) {
+        Format cf;
+        cf.mode = ra.mode;
+        const methods::CullResult c = methods::cull_spans(sc, frame, Model(cf));
+        culled = methods::kept_frame(frame, c);
+        std::printf("cull-specular: %llu of %llu triangles, %llu of %llu spans, %llu of %llu core pixels skipped\n",
+                    (unsigned long long)c.triangles_culled, (unsigned long long)c.triangles,
+                    (unsigned long long)c.spans_culled, (unsigned long long)c.spans,
+                    (unsigned long long)c.pixels_culled, (unsigned long long)c.pixels);
+        std::fflush(stdout);
+    }
     std::vector<ModelResult> res;
     for (auto m : models) {
         ModelResult r;
         r.model = m;
+        const render::Frame& spec_frame = ra.cull && m == ra.model ? culled : frame;
         ProgressBar pb(bar && m == ra.model, render::model_name(m));
-        r.run = render::shade_specular(sc, frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); },
+        r.run = render::shade_specular(sc, spec_frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); },
                                        ra.mode);
         r.img = render::compose(base, r.run);
         res.push_back(std::move(r));

@@ -6,6 +6,7 @@
 //   specsim demo [--vcd FILE] [--diagram FILE]
 //   specsim vectors --out FILE [--spans N] [--seed S]
 //   specsim render | render-bench | plots | export-obj   (cmd_render.cpp: host side and renderer)
+//   specsim highlight | normalize | parallax             (cmd_methods.cpp: the companion papers)
 //
 // Bad input: a one-line message on stderr and exit code 2.
 #include <cmath>
@@ -423,7 +424,7 @@ int main(int argc, char** argv) {
         if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::cout << kUsage << kRenderUsage << kBenchUsage << kTunedUsage;
+            std::cout << kUsage << kRenderUsage << kBenchUsage << kTunedUsage << kMethodsUsage;
             return 0;
         }
         if (cmd == "span") return cmd_span(argc, argv);
@@ -437,6 +438,9 @@ int main(int argc, char** argv) {
         if (cmd == "stream-diagram") return cmd_stream_diagram(argc, argv);
         if (cmd == "plots") return cmd_plots(argc, argv);
         if (cmd == "export-obj") return cmd_export_obj(argc, argv);
+        if (cmd == "highlight") return cmd_highlight(argc, argv);
+        if (cmd == "normalize") return cmd_normalize(argc, argv);
+        if (cmd == "parallax") return cmd_parallax(argc, argv);
         if (cmd == "compare") return cmd_compare(argc, argv);
         if (cmd == "tables") return cmd_tables(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
