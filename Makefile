@@ -15,6 +15,8 @@
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
 #   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
+#   make methods  the three companion papers measured: specsim highlight, normalize, parallax (docs/methods.md),
+#               pictures in build/methods
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -22,7 +24,7 @@ RTL := $(wildcard rtl/*.v)
 RTL_TOPS := $(basename $(notdir $(RTL)))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render synth deps-synth fusesoc plots images compare tables
+        bench-render synth deps-synth fusesoc plots images compare tables methods
 
 all: build
 
@@ -100,6 +102,19 @@ images: build
 	    --panel docs/img/panel.png
 	$(BUILD)/specsim plots --out-dir $(BUILD)/img_plots
 	cp $(BUILD)/img_plots/fig5.png $(BUILD)/img_plots/fig9.png docs/img/
+	$(BUILD)/specsim highlight --scene default --samples 1000 --out-dir $(BUILD)/img_methods > /dev/null
+	$(BUILD)/specsim normalize --scene teapot-lo --runs 3 --out-dir $(BUILD)/img_methods > /dev/null
+	$(BUILD)/specsim parallax --map bricks --grid 2 --out-dir $(BUILD)/img_methods > /dev/null
+	cp $(BUILD)/img_methods/cull_default.png docs/img/methods_cull.png
+	cp $(BUILD)/img_methods/fig3.png docs/img/methods_fig3.png
+	cp $(BUILD)/img_methods/panel_teapot-lo.png docs/img/methods_normalize.png
+	cp $(BUILD)/img_methods/parallax_bricks.png docs/img/methods_parallax.png
+
+# The companion papers (docs/methods.md): each claim measured, tables on stdout, pictures in build/methods
+methods: build
+	$(BUILD)/specsim highlight --out-dir $(BUILD)/methods
+	$(BUILD)/specsim normalize --out-dir $(BUILD)/methods
+	$(BUILD)/specsim parallax --out-dir $(BUILD)/methods
 
 # Tuned mode and other table sets (docs/tuned.md)
 compare: build

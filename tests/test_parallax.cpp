@@ -64,6 +64,26 @@ TEST(Parallax, ExactIsTheNearestIntersectionBruteForce) {
     }
 }
 
+// The linear search with many steps finds the exact (nearest) intersection; it counts its fetches.
+TEST(Parallax, LinearSearchConvergesToTheExactIntersection) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (const auto& name : heightmap_names()) {
+        const HeightMap m = make_heightmap(name, 64);
+        int agree = 0;
+        for (int k = 0; k < 200; ++k) {
+            const View V = view_from_angles(10 + 75 * u01(rng), 360 * u01(rng));
+            const double u0 = u01(rng), v0 = u01(rng);
+            const Hit e = exact(m, 0.06, u0, v0, V);
+            const Hit l = linear_search(m, 0.06, u0, v0, V, 3000, 30);
+            EXPECT_LE(l.iterations, 3030);
+            EXPECT_LE(l.t, e.t + 1e-9) << name;  // never above the nearest intersection
+            agree += std::fabs(l.t - e.t) < 1e-8;
+        }
+        EXPECT_GE(agree, 196) << name;
+    }
+}
+
 TEST(Parallax, KanekoWelshAndTheFirstIterationStep) {
     const HeightMap m = make_heightmap("rocks", 64);
     const View V = view_from_angles(35, 120);

@@ -106,6 +106,16 @@ Cone bounding_cone(const Vec& a, const Vec& b, const Vec& c) {
 }
 
 bool spherical_inside(const Vec& na, const Vec& nb, const Vec& nc, const Vec& h) {
+    // fast path: the centroid direction within 90 degrees of every normal (so they lie in an open
+    // hemisphere), a proper triangle, H in that hemisphere: three triple products decide
+    const Vec g = na + nb + nc;
+    const double s0 = det3(na, nb, nc);
+    if (glm::dot(g, na) > 0 && glm::dot(g, nb) > 0 && glm::dot(g, nc) > 0 && std::fabs(s0) >= 1e-14) {
+        if (glm::dot(h, g) <= 0) return false;
+        const double d1 = det3(na, nb, h), d2 = det3(nb, nc, h), d3 = det3(nc, na, h);
+        if (s0 > 0) return d1 >= 0 && d2 >= 0 && d3 >= 0;
+        return d1 <= 0 && d2 <= 0 && d3 <= 0;
+    }
     const Cone cone = bounding_cone(na, nb, nc);
     if (!cone.valid) return true;
     if (glm::dot(h, cone.axis) <= 0) return false;  // the other hemisphere (where -h would pass the signs)

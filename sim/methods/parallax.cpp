@@ -303,6 +303,31 @@ Hit exact(const HeightMap& m, double s, double u0, double v0, const View& V) {
     return h;
 }
 
+Hit linear_search(const HeightMap& m, double s, double u0, double v0, const View& V, int steps, int bisections) {
+    Hit h;
+    const double tmax = s / V.h;
+    double hi = tmax, lo = 0;  // f(hi) >= 0 (the slab's top), f(0) <= 0
+    for (int k = 1; k <= steps; ++k) {
+        const double t = tmax * (1.0 - double(k) / steps);
+        ++h.iterations;
+        if (f_at(m, s, u0, v0, V, t) <= 0) {
+            lo = t;
+            break;
+        }
+        hi = t;
+    }
+    for (int b = 0; b < bisections; ++b) {
+        const double mid = 0.5 * (lo + hi);
+        ++h.iterations;
+        if (f_at(m, s, u0, v0, V, mid) <= 0) lo = mid;
+        else hi = mid;
+    }
+    h.t = 0.5 * (lo + hi);
+    h.u = u0 + h.t * V.u;
+    h.v = v0 + h.t * V.v;
+    return h;
+}
+
 Hit dense_search(const HeightMap& m, double s, double u0, double v0, const View& V, int samples) {
     Hit h;
     const double tmax = s / V.h;

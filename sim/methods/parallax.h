@@ -61,6 +61,11 @@ Hit iterative(const HeightMap& m, double s, double u0, double v0, const View& V,
 // The exact nearest intersection (largest root of f), by walking the texel cells from the top of the relief
 // slab down and solving the quadratic in each.
 Hit exact(const HeightMap& m, double s, double u0, double v0, const View& V);
+// Linear search from the top of the slab in `steps` equal steps to the first point below the relief, then
+// `bisections` halvings of that interval (relief mapping / parallax occlusion mapping): steps + bisections
+// height fetches, the standard way to spend a fixed budget. Finds the nearest intersection unless a thin
+// feature lies between two steps.
+Hit linear_search(const HeightMap& m, double s, double u0, double v0, const View& V, int steps, int bisections);
 // Brute force for the tests: f sampled at `samples` points from t_max down, the first sign change refined by
 // bisection.
 Hit dense_search(const HeightMap& m, double s, double u0, double v0, const View& V, int samples);

@@ -145,8 +145,12 @@ int cmd_highlight_impl(int argc, char** argv) {
         uint64_t dom_pos = 0, dom_degen = 0, dom_miss_lit = 0, dom_miss_spot = 0, dom_miss_centre = 0, dom_false = 0;
         uint64_t xoy_pos = 0, xoy_degen = 0, xoy_miss_lit = 0, xoy_miss_spot = 0, xoy_miss_centre = 0, xoy_false = 0;
         uint64_t exact_in = 0, bound_culled_lit = 0;
+        // the paper's test used as the cull (dominant plane): spans kept, and the image against no culling
+        uint64_t paper_spans_kept = 0, paper_differing = 0, spans = 0;
+        int paper_max = 0;
     };
     std::vector<PaperRow> prow;
+    std::string per_object;
     for (const auto& name : scenes) {
         const render::Scene sc = render::make_scene(name);
         const render::Frame fr = render::rasterize(sc, size, size);
@@ -202,6 +206,18 @@ int cmd_highlight_impl(int argc, char** argv) {
                     (unsigned long long)cr.pixels_culled, pct(double(cr.pixels_culled), double(cr.pixels)), cyc,
                     (unsigned long long)culled_nonzero, (unsigned long long)st.differing, st.max_abs, 1e3 * t_bound);
         std::fflush(stdout);
+        if (sc.objects.size() > 1) {
+            std::vector<uint64_t> sp_all(sc.objects.size(), 0), sp_cut(sc.objects.size(), 0);
+            for (size_t k = 0; k < fr.spans.size(); ++k) {
+                ++sp_all[fr.spans[k].obj];
+                sp_cut[fr.spans[k].obj] += !cr.keep[k];
+            }
+            for (size_t o = 0; o < sc.objects.size(); ++o) {
+                per_object += "| " + name + ": " + sc.objects[o].name + " | " + std::to_string(sp_all[o]) + " | " +
+                              std::to_string(sp_cut[o]) + " (" +
+                              std::to_string(int(std::lround(pct(double(sp_cut[o]), double(sp_all[o]))))) + " %) |\n";
+            }
+        }
 
         PaperRow pr;
         pr.scene = name;
@@ -238,6 +254,28 @@ int cmd_highlight_impl(int argc, char** argv) {
             pr.xoy_false += xoy && !in;
             pr.bound_culled_lit += t.lit && culled_tri[kv.first];
         }
+        {
+            std::vector<uint8_t> keep_tri(fr.flipped.size(), 0);
+            for (const auto& kv : tri) {
+                Vec n[3], h[3];
+                methods::triangle_vectors(sc, fr, kv.first, n, h);
+                const Vec hc = glm::normalize(h[0] + h[1] + h[2]);
+                keep_tri[kv.first] = methods::paper_test(n[0], n[1], n[2], hc, methods::ProjPlane::dominant).inside;
+            }
+            methods::CullResult pc;
+            pc.keep.resize(fr.spans.size());
+            for (size_t k = 0; k < fr.spans.size(); ++k) {
+                pc.keep[k] = keep_tri[fr.spans[k].tri];
+                pr.paper_spans_kept += pc.keep[k];
+            }
+            const render::Image img_p = render::compose(
+                base, render::shade_specular(sc, methods::kept_frame(fr, pc), render::SpecModel::golden,
+                                             render::RgbMode::once));
+            const render::ImageStats sp = render::compare(img_p, img_all, base.covered);
+            pr.paper_differing = sp.differing;
+            pr.paper_max = sp.max_abs;
+            pr.spans = fr.spans.size();
+        }
         prow.push_back(pr);
         if (!out_dir.empty()) {
             // the image, culled triangles tinted blue
@@ -256,6 +294,10 @@ int cmd_highlight_impl(int argc, char** argv) {
         }
     }
 
+    if (!per_object.empty()) {
+        std::printf("\nPer object (the exponent decides how far from N = H the core still outputs 1 LSB):\n\n"
+                    "| object | spans | culled |\n|---|---|---|\n%s", per_object.c_str());
+    }
     std::printf("\n2. The paper's test in the same scenes, per drawn triangle, H taken at the triangle's centroid\n"
                 "   (normalized mean of the vertex H). Lit: the core outputs >= 1 LSB on one of its pixels; spot: at\n"
                 "   least 1 level of 255 of full scale (the visible highlight). The paper's four cases: centre outside\n"
@@ -287,6 +329,14 @@ int cmd_highlight_impl(int argc, char** argv) {
         }
     }
 
+    std::printf("\nThe paper's test as the cull (the core only on triangles it says contain the centre; dominant\n"
+                "plane), the golden image against no culling:\n\n| scene | spans sent to the core | pixels differing | "
+                "max difference (levels of 255) |\n|---|---|---|---|\n");
+    for (const auto& p : prow) {
+        std::printf("| %s | %llu of %llu (%.1f %%) | %llu | %d |\n", p.scene.c_str(), (unsigned long long)p.paper_spans_kept,
+                    (unsigned long long)p.spans, pct(double(p.paper_spans_kept), double(p.spans)),
+                    (unsigned long long)p.paper_differing, p.paper_max);
+    }
     std::printf("\n3. The paper's test against the exact one on random spherical triangles (vertex normals uniform in a\n"
                 "   cap of radius r around a random direction, H uniform in the cap of radius 1.5 r; %lld triangles\n"
                 "   per row, seed 1):\n\n", samples);
@@ -340,7 +390,7 @@ int cmd_highlight_impl(int argc, char** argv) {
         return uint64_t(methods::triangle_bound(n, h).b_host > 0.5);
     });
     std::printf("\nCost per triangle (medians of 5 runs over %zu triangles, this machine): paper's test %.0f ns, exact "
-                "spherical test %.0f ns (includes its bounding cone), N.H bound (two cones) %.0f ns\n",
+                "spherical test (three triple products) %.0f ns, N.H bound (two cones, five atan2) %.0f ns\n",
                 bench.size(), ns_paper, ns_exact, ns_bound);
     return 0;
 }
@@ -719,31 +769,57 @@ int cmd_parallax_impl(int argc, char** argv) {
         }
         std::printf("\n");
     }
-    std::printf("Error against the iteration cap (all maps, elevations 30 and 15 deg, same fragments; cap 1 = Welsh):\n\n"
-                "| cap | 30 deg: mean / p95 texels | converged | 15 deg: mean / p95 texels | converged |\n"
-                "|---|---|---|---|---|\n");
-    for (int cap : {1, 2, 4, 8, 16, 32, 64, 256}) {
-        std::printf("| %d |", cap);
-        for (double el : {30.0, 15.0}) {
-            ErrStats e;
-            uint64_t n = 0, conv = 0;
-            for (const auto& m : hm) {
-                for (int az = 0; az < azimuths; ++az) {
-                    const methods::View V = methods::view_from_angles(el, 360.0 * az / azimuths + 10.0);
-                    for (int gy = 0; gy < grid; ++gy) {
-                        for (int gx = 0; gx < grid; ++gx) {
-                            const double u0 = (gx + 0.37) / grid, v0 = (gy + 0.61) / grid;
-                            const methods::Hit ex = methods::exact(m, depth, u0, v0, V);
-                            const methods::Hit it = methods::iterative(m, depth, u0, v0, V, threshold, cap);
-                            const double err = texels(m, it.u, it.v, ex);
-                            e.add(err);
-                            ++n;
-                            conv += it.converged && err <= 1.0;
-                        }
+    std::printf("Error against the height fetches spent (all maps, elevations 30 and 15 deg, same fragments): the paper's\n"
+                "iteration with a cap of F steps (F = 1 is Welsh), and a linear search of F - 4 steps plus 4 bisections\n"
+                "(relief mapping / parallax occlusion mapping). Within 1 texel: the share of fragments whose result is\n"
+                "at most a texel from the exact intersection:\n\n"
+                "| fetches F | paper 30 deg: mean / p95 | within 1 texel | paper 15 deg: mean / p95 | within 1 texel | "
+                "search 30 deg: mean / p95 | within 1 texel | search 15 deg: mean / p95 | within 1 texel |\n"
+                "|---|---|---|---|---|---|---|---|---|\n");
+    // mean / p95 / share within a texel over every map, azimuth and fragment at one elevation
+    auto pooled = [&](double el, auto method) {
+        ErrStats e;
+        uint64_t n = 0, good = 0;
+        for (const auto& m : hm) {
+            for (int az = 0; az < azimuths; ++az) {
+                const methods::View V = methods::view_from_angles(el, 360.0 * az / azimuths + 10.0);
+                for (int gy = 0; gy < grid; ++gy) {
+                    for (int gx = 0; gx < grid; ++gx) {
+                        const double u0 = (gx + 0.37) / grid, v0 = (gy + 0.61) / grid;
+                        const methods::Hit ex = methods::exact(m, depth, u0, v0, V);
+                        const methods::Hit it = method(m, u0, v0, V);
+                        const double err = texels(m, it.u, it.v, ex);
+                        e.add(err);
+                        ++n;
+                        good += err <= 1.0;
                     }
                 }
             }
-            std::printf(" %.2f / %.2f | %.1f %% |", e.mean(), e.quantile(0.95), pct(double(conv), double(n)));
+        }
+        std::printf(" %.2f / %.2f | %.1f %% |", e.mean(), e.quantile(0.95), pct(double(good), double(n)));
+    };
+    std::printf("| Kaneko (1 + a division) |");
+    for (double el : {30.0, 15.0}) {
+        pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
+            return methods::kaneko(m, depth, u0, v0, V);
+        });
+    }
+    std::printf(" - | - | - | - |\n");
+    for (int cap : {1, 2, 4, 8, 16, 32, 64, 256}) {
+        std::printf("| %d |", cap);
+        for (double el : {30.0, 15.0}) {
+            pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
+                return methods::iterative(m, depth, u0, v0, V, threshold, cap);
+            });
+        }
+        for (double el : {30.0, 15.0}) {
+            if (cap < 8) {
+                std::printf(" - | - |");
+                continue;
+            }
+            pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
+                return methods::linear_search(m, depth, u0, v0, V, cap - 4, 4);
+            });
         }
         std::printf("\n");
     }
