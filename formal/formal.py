@@ -1,0 +1,230 @@
+#!/usr/bin/env python3
+"""formal.py - proves the formal properties of formal/*.v (make formal).
+
+For each job: the generator writes ROM images and a parameter header for the reduced widths below; Yosys
+reads rtl/ at those widths, flattens the core, makes the internal signals the properties name into ports
+(`expose`) and renames it, reads the property wrapper on top and writes an SMT-LIB2 model; yosys-smtbmc
+with z3 then runs
+  - the base case: every assertion holds in every cycle of every trace from reset up to DEPTH cycles (BMC),
+  - the induction step: DEPTH cycles in which the assertions hold are always followed by one in which
+    they hold too; with the base case this proves them for traces of any length (unbounded),
+  - the covers: a trace reaches each `cover` within COVER cycles.
+It is what SymbiYosys does for `mode prove` and `mode cover`, without needing SymbiYosys.
+Exit code 0 only when every proof and every cover passed; a failing proof leaves a counterexample trace
+(VCD) in the work directory and says where.
+
+usage: formal.py [--specrom PATH] [--work DIR] [--jobs NAME,...] [--yosys yosys] [--smtbmc yosys-smtbmc]
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The reduced widths (rom/gen Format::validate limits): 4-bit C and output, 14-bit angles (11 fraction
+# bits; spec_stream's accumulator needs ANG_W + L_W > 16 for its two segments), n 0..15 (N_W = 4: decoder
+# 10's gates assume at least four bits), l 0..7, ROM 9 5-bit words, ROM 12 4 tables x 16 positions of 5 bits.
+WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
+          "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
+
+LEAVES = ["spec_reg", "spec_counter", "spec_accum", "spec_rom", "spec_rom9", "spec_decoder", "spec_mul11",
+          "spec_rom12", "spec_interp", "spec_mul13", "spec_delay", "spec_datapath", "spec_saccum", "spec_ctrl"]
+
+JOBS = {
+    "spec_unit": dict(
+        core="spec_unit", wrapper="fv_spec_unit",
+        expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
+                "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs"],
+        depth=2, bmc=40, cover=48),
+    "spec_stream": dict(
+        core="spec_stream", wrapper="fv_spec_stream",
+        expose=["head_v", "tail_v", "ready_q", "head_l", "head_single", "tail", "cur_v", "cur_cnt", "cur_last",
+                "v8", "u_dp.vs", "skid_v", "skid_last", "u_side8.g_regs.r*", "u_dp.u_last.g_regs.r*",
+                "ce", "take", "step", "o_load", "head_load"],
+        # the datapath's pixel value is cut off and left free (every value possible): the properties are
+        # about flow control, and without the multipliers, ROMs and the 32-bit accumulator z3 is much faster
+        cut=["dp_out"],
+        depth=1, bmc=3, cover=40),
+}
+
+
+# Mutants (--mutants): small bugs put into a copy of rtl/; the base case of the named job must fail on
+# each, which shows that the properties can fail and what they catch. (spec_stream's base case is only as
+# deep as its induction; its mutants would need a deep BMC, which z3 is slow at - see docs/verification.md.)
+MUTANTS = [
+    ("spec_unit", "spec_unit.v", ".load_n(len_load_n | busy_o)", ".load_n(len_load_n)",
+     "counter 5 loads while busy"),
+    ("spec_unit", "spec_unit.v", ".we(c_we & idle)", ".we(c_we)", "register 1 written while busy"),
+    ("spec_unit", "spec_unit.v", ".start(start & idle)", ".start(start)", "Start not ignored while busy"),
+    ("spec_unit", "spec_unit.v", "assign busy_o = sig28 | fresh8 | dp_busy;", "assign busy_o = sig28 | fresh8;",
+     "busy_o falls before the last pixel is out"),
+    ("spec_unit", "spec_counter.v", "(q == {W{1'b0}})", "(q == {{(W - 1) {1'b0}}, 1'b1})",
+     "the span ends one pixel early"),
+    ("spec_unit", "spec_ctrl.v", "gen40 <= ff39 & ~gen40;", "gen40 <= ~gen40;",
+     "pulse generator free-running while idle (latency varies)"),
+    ("spec_unit", "spec_ctrl.v", "if (sig37) begin", "if (sig37 && ff41) begin", "an equivalent change (must pass)"),
+]
+
+
+def run(cmd, log, cwd):
+    with open(log, "w") as f:
+        p = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+    return p.returncode
+
+
+def tail(path, n=15):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    return "\n".join(lines[-n:])
+
+
+def build_model(job, name, work, yosys, rtl_dir):
+    rtl = [os.path.join(rtl_dir, m + ".v") for m in LEAVES + [job["core"]]]
+    script = [
+        "read_verilog -defer -I rom " + " ".join(rtl),
+        "hierarchy -top " + job["core"],
+        "proc",
+        "flatten",
+        "expose " + " ".join("w:" + w for w in job["expose"]),
+    ] + (["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
+        "rename %s fv_core_%s" % (job["core"], job["core"].split("_", 1)[1]),
+        "read_verilog -formal -I rom " + os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
+        "hierarchy -check -top " + job["wrapper"],
+        "proc",
+        "flatten",
+        "opt_clean",
+        "memory_nordff",
+        "memory_map",
+        "opt -fast",
+        "async2sync",
+        "opt_clean",
+        "dffunmap",
+        "stat",
+        "write_smt2 -wires %s.smt2" % name,
+    ]
+    with open(os.path.join(work, name + ".ys"), "w") as f:
+        f.write("\n".join(script) + "\n")
+    return run([yosys, "-q", "-l", name + "_yosys.log", "-s", name + ".ys"], os.path.join(work, name + "_yosys.out"), work)
+
+
+def run_mutants(a, work):
+    bad = 0
+    for i, (name, fname, old, new, what) in enumerate(MUTANTS):
+        mdir = os.path.join(work, "mutant%d" % i)
+        shutil.rmtree(mdir, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "rtl"), os.path.join(mdir, "rtl"))
+        os.symlink(os.path.join(work, "rom"), os.path.join(mdir, "rom"))
+        path = os.path.join(mdir, "rtl", fname)
+        text = open(path).read()
+        if text.count(old) != 1:
+            print("mutant %d (%s): '%s' not found once in rtl/%s - update formal.py" % (i, what, old, fname))
+            bad += 1
+            continue
+        open(path, "w").write(text.replace(old, new))
+        job = JOBS[name]
+        if build_model(job, name, mdir, a.yosys, os.path.join(mdir, "rtl")) != 0:
+            print("mutant %d: Yosys failed" % i)
+            bad += 1
+            continue
+        log = os.path.join(mdir, name + "_bmc.log")
+        rc = run([a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress", "-t", str(job["bmc"]),
+                  "--dump-vcd", "cex.vcd", name + ".smt2"], log, mdir)
+        text = open(log).read()
+        caught = rc != 0 and "FAILED" in text
+        expect = "must pass" not in what
+        m = re.search(r"Assert failed in \S+: (\S+)", text)
+        where = (" (%s)" % os.path.basename(m.group(1))) if m else ""
+        ok = caught == expect
+        print("mutant %d %-58s %s%s" % (i, what, ("caught" if caught else "not caught") + ("" if ok else "  <- WRONG"),
+                                          where if caught else ""), flush=True)
+        if not ok:
+            bad += 1
+    print("formal: %s" % ("every mutant caught as expected" if bad == 0 else "%d mutant(s) wrong" % bad))
+    return 0 if bad == 0 else 1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
+    ap.add_argument("--work", default=os.path.join(ROOT, "build", "formal"))
+    ap.add_argument("--jobs", default=",".join(JOBS))
+    ap.add_argument("--yosys", default="yosys")
+    ap.add_argument("--smtbmc", default="yosys-smtbmc")
+    ap.add_argument("--solver", default="z3")
+    ap.add_argument("--rtl", default=os.path.join(ROOT, "rtl"), help="RTL directory (a mutant's, to see a proof fail)")
+    ap.add_argument("--steps", default="bmc,induction,cover")
+    ap.add_argument("--mutants", action="store_true", help="check that the properties fail on broken RTL")
+    a = ap.parse_args()
+    a.specrom = os.path.abspath(a.specrom)
+
+    for tool in (a.yosys, a.smtbmc, a.solver):
+        if shutil.which(tool) is None:
+            print("formal: '%s' not found (make deps-formal installs yosys and z3)" % tool, file=sys.stderr)
+            return 2
+    if not os.access(a.specrom, os.X_OK):
+        print("formal: no generator at %s (build it first)" % a.specrom, file=sys.stderr)
+        return 2
+    jobs = [j for j in a.jobs.split(",") if j]
+    for j in jobs:
+        if j not in JOBS:
+            print("formal: unknown job '%s' (jobs: %s)" % (j, ", ".join(JOBS)), file=sys.stderr)
+            return 2
+
+    work = os.path.abspath(a.work)
+    os.makedirs(os.path.join(work, "rom"), exist_ok=True)
+    if run([a.specrom, "--out", "rom"] + WIDTHS, os.path.join(work, "specrom.log"), work) != 0:
+        print("formal: specrom failed:\n" + tail(os.path.join(work, "specrom.log")), file=sys.stderr)
+        return 1
+
+    if a.mutants:
+        return run_mutants(a, work)
+
+    failed = 0
+    rows = []
+    for name in jobs:
+        job = JOBS[name]
+        t0 = time.time()
+        if build_model(job, name, work, a.yosys, os.path.abspath(a.rtl)) != 0:
+            print("formal: %s: Yosys failed:\n%s" % (name, tail(os.path.join(work, name + "_yosys.out"))))
+            failed += 1
+            continue
+        smt = name + ".smt2"
+        # --unroll: z3 4.8 takes minutes to read the model's nested function definitions otherwise
+        base = [a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress"]
+        steps = [
+            ("bmc", "base case, %d cycles" % job["bmc"],
+             base + ["-t", str(job["bmc"]), "--dump-vcd", name + "_bmc.vcd", smt]),
+            ("induction", "induction, k = %d" % job["depth"],
+             base + ["-i", "-t", str(job["depth"]), "--dump-vcd", name + "_induction.vcd", smt]),
+            ("cover", "covers within %d cycles" % job["cover"],
+             base + ["-c", "-t", str(job["cover"]), "--dump-vcd", name + "_cover%.vcd", smt]),
+        ]
+        for step, what, cmd in steps:
+            if step not in a.steps.split(","):
+                continue
+            log = os.path.join(work, "%s_%s.log" % (name, step))
+            t1 = time.time()
+            rc = run(cmd, log, work)
+            dt = time.time() - t1
+            text = open(log).read()
+            ok = rc == 0 and "PASSED" in text
+            extra = ""
+            if step == "cover":
+                n = len(re.findall(r"Reached cover statement", text))
+                extra = " (%d reached)" % n
+            rows.append((name, what + extra, "pass" if ok else "FAIL", dt))
+            print("%-12s %-40s %-5s %6.1f s" % (name, what + extra, "pass" if ok else "FAIL", dt), flush=True)
+            if not ok:
+                failed += 1
+                print("  log: %s\n%s" % (log, tail(log, 12)))
+        del t0
+    print("formal: %s" % ("all proofs and covers passed" if failed == 0 else "%d step(s) failed" % failed))
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
