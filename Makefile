@@ -17,6 +17,13 @@
 #   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax (docs/methods.md),
 #               pictures in build/methods
+# Verification in depth (docs/verification.md; not part of make test):
+#   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
+#   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
+#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two)
+#   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
+#                   FUZZ_TIME seconds per target (60)
+#   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -24,7 +31,8 @@ RTL := $(wildcard rtl/*.v)
 RTL_TOPS := $(basename $(notdir $(RTL)))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render synth deps-synth fusesoc plots images compare tables methods
+        bench-render synth deps-synth fusesoc plots images formal deps-formal coverage test-long test-asan fuzz \
+        deps-fuzz compare tables methods
 
 all: build
 
@@ -147,3 +155,43 @@ synth: build deps-synth
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
 fusesoc: build deps-synth
 	BUILD=$(BUILD) scripts/fusesoc.sh
+
+# ---- Verification in depth (issue 5, docs/verification.md) ---------------------------------------------------
+LONG_PIXELS ?= 100000000
+FUZZ_TIME ?= 60
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+
+deps-formal:
+	@scripts/deps.sh z3 python3
+
+formal: deps deps-formal configure
+	cmake --build $(BUILD) -j$(JOBS) --target specrom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal
+
+coverage: deps
+	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
+	cmake --build $(BUILD)-cov -j$(JOBS) --target spec_tests specsim
+	rm -rf $(BUILD)-cov/coverage $(BUILD)-cov/annotated
+	cd $(BUILD)-cov && SPEC_COVERAGE_DIR=coverage ./spec_tests --gtest_brief=1
+	python3 scripts/coverage.py --goal 95 --uncovered --annotate $(BUILD)-cov/annotated $(BUILD)-cov/coverage
+
+test-long: build
+	cmake --build $(BUILD) -j$(JOBS) --target spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) $(BUILD)/spec_long
+
+test-asan: deps
+	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS)" \
+	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
+	cmake --build $(BUILD)-asan -j$(JOBS)
+	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    ctest -j$(JOBS) --output-on-failure
+	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
+
+deps-fuzz:
+	@scripts/deps.sh clang libclang-rt-14-dev
+
+fuzz: deps deps-fuzz
+	cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DCMAKE_CXX_COMPILER=clang++ -DSPEC_FUZZ=ON \
+	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
+	cmake --build $(BUILD)-fuzz -j$(JOBS) --target fuzz_cli fuzz_format fuzz_host fuzz_obj fuzz_specsim
+	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)

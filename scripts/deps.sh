@@ -3,7 +3,7 @@
 # Usage: scripts/deps.sh [extra packages...]
 set -euo pipefail
 pkgs=(cmake make g++ verilator iverilog yosys libgtest-dev
-      libglm-dev libpng-dev libtinyobjloader-dev libstb-dev gnuplot-nox "$@")
+      libglm-dev libpng-dev libtinyobjloader-dev libstb-dev gnuplot-nox python3 "$@")
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "deps: not a Debian system; install these yourself: ${pkgs[*]}" >&2
     exit 1

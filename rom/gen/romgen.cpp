@@ -35,7 +35,7 @@ void Format::validate() const {
     need(out_w == c_w, "out_w must equal c_w (n = 0 must give C exactly)");
     need(ang_w >= 8 && ang_w <= 40, "ang_w must be 8..40");
     need(ang_frac >= 4 && ang_frac <= ang_w - 3, "ang_frac must be 4..ang_w-3 (the range must hold pi)");
-    need(n_w >= 3 && n_w <= 12, "n_w must be 3..12");
+    need(n_w >= 4 && n_w <= 12, "n_w must be 4..12 (decoder 10's gates need n's bit 3)");
     need(l_w >= 1 && l_w <= 24, "l_w must be 1..24");
     need(tbl_aw >= 4 && tbl_aw <= 16, "tbl_aw must be 4..16");
     need(tbl_frac >= 4 && tbl_frac <= 24, "tbl_frac must be 4..24");

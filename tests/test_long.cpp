@@ -1,0 +1,293 @@
+// test_long.cpp - make test-long (docs/verification.md): millions of random pixels through the Verilated
+// spec_stream and spec_unit against the bit-exact model, with random stalls on both sides, resets in the
+// middle of spans, back-to-back spans and inputs that must be ignored. Not part of make test.
+//
+// SPEC_LONG_PIXELS (default 10000000; make test-long passes 10^8) pixels through each core in the patent's configuration, a tenth of
+// that through spec_stream's up5k configuration and both cores in tuned mode; SPEC_LONG_SEED (default 1)
+// picks the run.
+// Each test prints how many pixels it checked; a mismatch stops it with the span, pixel and cycle.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <algorithm>
+#include <deque>
+#include <random>
+#include <string>
+
+#include "Vspec_stream.h"
+#include "Vspec_stream_tuned.h"
+#include "Vspec_stream_up5k.h"
+#include "Vspec_unit.h"
+#include "Vspec_unit_tuned.h"
+#include "analysis.h"
+#include "spec_model.h"
+#include "stream_driver.h"
+#include "unit_driver.h"
+
+using namespace spec;
+
+namespace {
+uint64_t env_u64(const char* name, uint64_t dflt) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) return dflt;
+    char* end = nullptr;
+    const unsigned long long x = std::strtoull(v, &end, 0);
+    if (*end != '\0') {
+        std::fprintf(stderr, "%s: '%s' is not a number\n", name, v);
+        std::exit(2);
+    }
+    return x;
+}
+const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
+const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
+
+// A random span as a host would send it (angles inside the format, often short, sometimes long), or with
+// raw register contents (angles that saturate, any step) one time in sixteen.
+SpanRegs random_span(std::mt19937_64& rng, const Model& m, uint32_t max_len) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    SpanRegs r;
+    r.n = static_cast<uint32_t>(rng() % 1024);
+    r.c = static_cast<uint32_t>(rng() & 0xffff);
+    switch (rng() % 8) {
+        case 0: case 1: r.len = 0; break;
+        case 2: case 3: r.len = static_cast<uint32_t>(rng() % 4); break;
+        case 7: r.len = static_cast<uint32_t>(rng() % (4 * max_len + 1)); break;
+        default: r.len = static_cast<uint32_t>(rng() % (max_len + 1)); break;
+    }
+    r.len = std::min<uint32_t>(r.len, 0xffff);   // the length field's 16 bits
+    const double reach = std::min(M_PI, 6.0 * epicentre_end(r.n));
+    r.zeta0 = m.quantize_angle(reach * u(rng));
+    r.dzeta = m.quantize_angle(r.len ? (reach * u(rng) - m.angle_value(r.zeta0)) / r.len : 0.0);
+    if (rng() % 16 == 0) {
+        r.zeta0 = static_cast<int32_t>(rng());
+        r.dzeta = static_cast<int32_t>(rng()) >> (rng() % 32);
+    }
+    return r;
+}
+
+struct Expected {
+    uint32_t value;
+    bool last;
+    uint64_t span;
+    uint32_t index;
+};
+}  // namespace
+
+// spec_stream: an AXI source that holds each descriptor until it is taken, a sink whose readiness changes
+// with the phase of the run (always ready, 90 %, 50 %, 10 %, bursts), a reset every few hundred thousand
+// cycles at a random point. Every pixel and tlast is checked against the model in order; after a reset the
+// pixels of spans accepted before it must not appear. AXI rules are checked each cycle.
+template <class V>
+void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) {
+    StreamDriver<V> d;
+    auto& t = d.top();
+    std::mt19937_64 rng(seed);
+    std::deque<Expected> want;
+    uint64_t checked = 0, spans_in = 0, resets = 0, cycles = 0, lost_by_reset = 0, idle_ready = 0;
+    bool offering = false;
+    SpanRegs cur;
+    bool prev_stalled = false;
+    uint32_t prev_data = 0;
+    bool prev_last = false;
+    double p_ready = 1.0, p_offer = 1.0;
+    const uint64_t reset_gap = std::max<uint64_t>(2000, pixels / 25);   // a reset every ~reset_gap cycles
+    uint64_t next_reset = reset_gap / 4 + rng() % reset_gap;
+    while (checked < pixels) {
+        ++cycles;
+        if (cycles % 4096 == 0) {   // a new stall regime now and then
+            static const double regimes[][2] = {{1, 1}, {1, 0.9}, {0.9, 1}, {0.5, 0.5}, {1, 0.1}, {0.2, 1}, {0.97, 0.97}};
+            const auto& g = regimes[rng() % 7];
+            p_offer = g[0];
+            p_ready = g[1];
+        }
+        const bool reset_now = cycles == next_reset;
+        if (!offering && std::bernoulli_distribution(p_offer)(rng)) {
+            cur = random_span(rng, m, rng() % 4096 == 0 ? 65535 : rng() % 8 == 0 ? 400 : 24);
+            offering = true;
+        }
+        t.s_axis_tvalid = offering;
+        if (offering) {
+            uint32_t w[4];
+            pack_descriptor(cur, w);
+            for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+        }
+        t.m_axis_tready = std::bernoulli_distribution(p_ready)(rng);
+        t.rst_n = !reset_now;
+        t.eval();
+        // AXI4-Stream source rules on the pixel side
+        if (prev_stalled) {
+            ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready, cycle " << d.cycle();
+            ASSERT_EQ(t.m_axis_tdata, prev_data) << "tdata changed while stalled, cycle " << d.cycle();
+            ASSERT_EQ(t.m_axis_tlast != 0, prev_last) << "tlast changed while stalled, cycle " << d.cycle();
+        }
+        const bool in_fire = t.s_axis_tvalid && t.s_axis_tready && !reset_now;
+        const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
+        if (out_fire) {
+            ASSERT_FALSE(want.empty()) << "a pixel nobody asked for, cycle " << d.cycle();
+            const Expected e = want.front();
+            want.pop_front();
+            ASSERT_EQ(t.m_axis_tdata, e.value) << "span " << e.span << " pixel " << e.index << " cycle " << d.cycle();
+            ASSERT_EQ(t.m_axis_tlast != 0, e.last) << "tlast, span " << e.span << " pixel " << e.index;
+            ++checked;
+        }
+        if (t.m_axis_tready && !t.m_axis_tvalid && !want.empty()) ++idle_ready;
+        prev_stalled = t.m_axis_tvalid && !t.m_axis_tready && !reset_now;
+        prev_data = t.m_axis_tdata;
+        prev_last = t.m_axis_tlast != 0;
+        if (in_fire) {
+            const auto px = m.span(cur);
+            for (uint32_t i = 0; i < px.size(); ++i) want.push_back({px[i], i + 1 == px.size(), spans_in, i});
+            ++spans_in;
+            offering = false;
+        }
+        d.step();
+        if (reset_now) {
+            // whatever was in flight is gone; the source keeps offering its descriptor
+            lost_by_reset += want.size();
+            want.clear();
+            ++resets;
+            next_reset = cycles + reset_gap / 4 + rng() % reset_gap;
+            t.rst_n = 1;
+            t.s_axis_tvalid = 0;
+            t.eval();
+            ASSERT_FALSE(t.m_axis_tvalid) << "tvalid in the cycle after a reset";
+            ASSERT_FALSE(t.s_axis_tready) << "tready in the cycle after a reset";
+            prev_stalled = false;
+        }
+    }
+    std::printf("%s: %llu pixels checked against the model (%llu spans, %llu cycles, %llu resets, "
+                "%llu pixels dropped by resets as specified)\n",
+                name, (unsigned long long)checked, (unsigned long long)spans_in, (unsigned long long)cycles,
+                (unsigned long long)resets, (unsigned long long)lost_by_reset);
+    ::testing::Test::RecordProperty(std::string(name) + " pixels", std::to_string(checked));
+    EXPECT_GT(resets, 0u);
+    (void)idle_ready;
+}
+
+TEST(Long, StreamAgainstModel) { stream_run<Vspec_stream>("spec_stream", Model(), kPixels, kSeed * 1000 + 1); }
+TEST(Long, StreamUp5kAgainstModel) {
+    stream_run<Vspec_stream_up5k>("spec_stream (up5k)", Model(config_format("up5k")), kPixels / 10, kSeed * 1000 + 3);
+}
+TEST(Long, StreamTunedAgainstModel) {
+    Format f;
+    f.mode = Mode::tuned;
+    stream_run<Vspec_stream_tuned>("spec_stream (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 4);
+}
+
+// spec_unit: registers written in the cycle of Start or before it, Start in the cycle busy_o falls (back to
+// back) or after idle cycles, Start/writes/loads with random values while busy (ignored), init_n low in the
+// middle of some spans, now and then a Start without a new load (2^16 pixels). Each pixel is checked
+// against the model and against its cycle: pixel i's valid_o exactly 15 + 2i cycles after Start.
+template <class V>
+void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) {
+    UnitDriverT<V> d;
+    auto& t = d.top();
+    std::mt19937_64 rng(seed);
+    uint64_t checked = 0, spans = 0, inits = 0, noload = 0, chained = 0;
+    const int kFirst = 15;
+    bool counter_max = false;   // counter 5 holds 2^16 - 1 (after a span, no load since)
+    SpanRegs regs{};            // what registers 1-4 hold
+    bool start_now = false;     // Start in the cycle busy_o falls
+    while (checked < pixels) {
+        // idle: maybe some cycles with nothing, writes now or in the Start cycle
+        SpanRegs next = random_span(rng, m, rng() % 8 == 0 ? 400 : 30);
+        bool load = true;
+        if (counter_max && rng() % 3000 == 0) {
+            load = false;   // Start without a new load: 2^16 pixels
+            next.len = 0xffff;
+            ++noload;
+        }
+        if (!start_now) {
+            const int gap = static_cast<int>(rng() % 4);
+            for (int i = 0; i < gap; ++i) d.step();
+        }
+        const bool split = !start_now && rng() % 2;   // write some registers in an earlier cycle
+        if (start_now) ++chained;
+        if (split) {
+            t.c_i = next.c;
+            t.c_we = 1;
+            t.n_i = next.n;
+            t.n_we = 1;
+            d.step();
+        }
+        t.c_i = next.c;
+        t.c_we = !split;
+        t.n_i = next.n;
+        t.n_we = !split;
+        t.dzeta_i = static_cast<uint32_t>(next.dzeta);
+        t.dzeta_we = 1;
+        t.zeta0_i = static_cast<uint32_t>(next.zeta0);
+        t.zeta0_we = 1;
+        t.len_i = next.len;
+        t.len_load_n = !load;
+        t.start = 1;
+        ASSERT_FALSE(t.busy_o) << "busy before Start, span " << spans;
+        regs = next;
+        d.step();
+        ++spans;
+        counter_max = false;
+        const auto want = m.span(regs);
+        // run the span: noise while busy, maybe an init
+        const uint64_t init_at = rng() % 16 == 0 ? 1 + rng() % (kFirst + 2 * want.size()) : 0;
+        size_t got = 0;
+        start_now = false;
+        for (uint64_t c = 1;; ++c) {
+            t.eval();
+            if (init_at && c == init_at) {
+                t.init_n = 0;
+                d.step();
+                ++inits;
+                t.eval();
+                ASSERT_FALSE(t.busy_o) << "busy after init_n";
+                ASSERT_FALSE(t.valid_o) << "valid after init_n";
+                ASSERT_EQ(t.intensity_o, 0u);
+                regs = SpanRegs{};
+                break;
+            }
+            if (!t.busy_o) {
+                ASSERT_EQ(got, want.size()) << "span " << spans << " ended after " << got << " of " << want.size()
+                                            << " pixels";
+                ASSERT_EQ(c, uint64_t(kFirst + 2 * want.size() - 1)) << "busy_o fell late or early, span " << spans;
+                counter_max = true;
+                start_now = rng() % 2;
+                break;
+            }
+            const bool pixel_cycle = c >= kFirst && (c - kFirst) % 2 == 0 && (c - kFirst) / 2 < want.size();
+            ASSERT_EQ(t.valid_o != 0, pixel_cycle) << "valid_o in cycle " << c << " of span " << spans;
+            if (t.valid_o) {
+                ASSERT_EQ(t.intensity_o, want[got]) << "span " << spans << " pixel " << got << " n=" << regs.n;
+                ++got;
+                ++checked;
+            }
+            // noise: everything here must be ignored while busy
+            if (rng() % 4 == 0) {
+                t.start = rng() % 2;
+                t.c_we = rng() % 2;
+                t.c_i = static_cast<uint32_t>(rng());
+                t.n_we = rng() % 2;
+                t.n_i = static_cast<uint32_t>(rng());
+                t.dzeta_we = rng() % 2;
+                t.dzeta_i = static_cast<uint32_t>(rng());
+                t.zeta0_we = rng() % 2;
+                t.zeta0_i = static_cast<uint32_t>(rng());
+                t.len_load_n = rng() % 2;
+                t.len_i = static_cast<uint32_t>(rng());
+            }
+            d.step();
+        }
+    }
+    std::printf("%s: %llu pixels checked against the model (%llu spans, %llu back to back, %llu cut by "
+                "init_n, %llu without a new load, %llu cycles)\n",
+                name, (unsigned long long)checked, (unsigned long long)spans, (unsigned long long)chained,
+                (unsigned long long)inits, (unsigned long long)noload, (unsigned long long)d.cycle());
+    ::testing::Test::RecordProperty(std::string(name) + " pixels", std::to_string(checked));
+    EXPECT_GT(inits, 0u);
+}
+
+TEST(Long, UnitAgainstModel) { unit_run<Vspec_unit>("spec_unit", Model(), kPixels, kSeed * 1000 + 2); }
+TEST(Long, UnitTunedAgainstModel) {
+    Format f;
+    f.mode = Mode::tuned;
+    unit_run<Vspec_unit_tuned>("spec_unit (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 5);
+}
