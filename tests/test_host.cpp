@@ -246,6 +246,27 @@ TEST(Host, NearlyOppositeNormals) {
     EXPECT_NEAR(a.lambda, b.lambda, 1e-4);
 }
 
+// Opposite halfway vectors at the ends (gamma = pi, H1 x H2' = 0): every great circle joins them and the
+// host takes slerp()'s (found by make fuzz: NaN angles before; fuzz/regress/host holds that input).
+TEST(Host, OppositeHalfwayVectors) {
+    const Model m;
+    const Vec n(0, 0, 1);
+    for (const Vec& h1 : {Vec(0, 0, 1), glm::normalize(Vec(0.3, -0.2, 1)), Vec(1, 0, 0)}) {
+        for (auto rule : {host::GammaRule::patent, host::GammaRule::midpoint}) {
+            const SpanEnds e{n, n, h1, -h1};
+            const SpanSetup s = host::setup_span(m, e, 0.9, 10, 30, rule);
+            ASSERT_TRUE(finite_regs(m, s));
+            EXPECT_NEAR(s.gamma, M_PI, 1e-9);
+            EXPECT_NEAR(s.value(0), host::brute_force(e, 0.9, 10, 30, 0), 1e-9);
+            EXPECT_NEAR(s.value(30), host::brute_force(e, 0.9, 10, 30, 30), 1e-9);
+            if (rule == host::GammaRule::patent) {  // the same great circle as the brute force's slerp
+                for (uint32_t i = 0; i <= 30; i += 5)
+                    EXPECT_NEAR(s.value(i), host::brute_force(e, 0.9, 10, 30, i), 1e-9) << i;
+            }
+        }
+    }
+}
+
 TEST(Host, SinglePixelSpan) {
     const Model m;
     std::mt19937_64 g(19);

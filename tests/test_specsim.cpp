@@ -113,6 +113,9 @@ TEST(Specsim, BadInputGetsOneLineAndExitCode2) {
         "frobnicate",
         "",
         "vectors --spans 3",
+        // control characters in a value stay inside the one line (escaped: \n, \t, \xNN; found by make fuzz)
+        "span --n '1\n2' --c 0.5 --zeta0 0 --dzeta 0.1 --len 3",
+        "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3 --model 'a\tb\x01\r\n'",
     };
     for (const char* b : bad) {
         Result r = run(b);
@@ -122,6 +125,7 @@ TEST(Specsim, BadInputGetsOneLineAndExitCode2) {
         EXPECT_EQ(l.size(), 1u) << b << ": " << r.err;
         if (!l.empty()) EXPECT_EQ(l[0].rfind("specsim: ", 0), 0u) << l[0];
     }
+    EXPECT_NE(run("span --n '1\n2' " + ok).err.find("'1\\n2' is not an integer"), std::string::npos);
     EXPECT_EQ(run("span --n 5 " + ok).code, 0);
     EXPECT_EQ(run("span --n 5 --c 0.5 --zeta0 -8 --dzeta 0 --len 3").code, 0) << "-8 is the format's minimum";
 }

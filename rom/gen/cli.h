@@ -11,8 +11,29 @@
 
 namespace spec {
 
+// A message made one printable line: control characters (a newline in an argument, say) become C escapes
+// (\n, \t, \xNN), so that echoing the user's input cannot split the one-line error into several.
+inline std::string printable(const std::string& s) {
+    static const char* hex = "0123456789abcdef";
+    std::string o;
+    o.reserve(s.size());
+    for (unsigned char c : s) {
+        if (c == '\n') o += "\\n";
+        else if (c == '\r') o += "\\r";
+        else if (c == '\t') o += "\\t";
+        else if (c < 0x20 || c == 0x7f) {
+            o += "\\x";
+            o += hex[c >> 4];
+            o += hex[c & 15];
+        } else {
+            o += static_cast<char>(c);
+        }
+    }
+    return o;
+}
+
 struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
 };
 
 inline long long parse_int(const std::string& flag, const std::string& s, long long lo, long long hi) {

@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
         write_all(f, out);
         return 0;
     } catch (const std::exception& e) {
-        std::cerr << "specrom: " << e.what() << "\n";
+        std::cerr << "specrom: " << spec::printable(e.what()) << "\n";
         return 2;
     }
 }

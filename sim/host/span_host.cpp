@@ -136,7 +136,9 @@ SpanSetup setup_span(const Model& m, const SpanEnds& e, double strength, unsigne
         // Eq. (3) in the form that never divides by cos(theta1): A cos(lambda) = N1.H1 and
         // A sin(lambda) = N1.T, T the unit tangent at H1 of the great circle toward H2'
         // (T = (H2' - H1 cos(gamma)) / sin(gamma), written as (H1 x H2') x H1 / |H1 x H2'|).
-        Vec t = glm::cross(x, h1) / sg;
+        // H2' = -H1 (gamma = pi, x = 0): every great circle joins them; take the one slerp() takes
+        // (slerp_frame: perpendicular(H1)). Found by make fuzz (fuzz/regress/host).
+        Vec t = sg > 1e-200 ? glm::cross(x, h1) / sg : perpendicular(h1);
         t = glm::normalize(t - h1 * glm::dot(h1, t));  // for small gamma x carries rounding of order 1e-16/gamma
         double a_sin = glm::dot(n1, t);
         if (rule == GammaRule::midpoint) {

@@ -445,10 +445,10 @@ int main(int argc, char** argv) {
         if (cmd == "tables") return cmd_tables(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
     } catch (const UsageError& e) {
-        std::cerr << "specsim: " << e.what() << "\n";
+        std::cerr << "specsim: " << spec::printable(e.what()) << "\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "specsim: " << e.what() << "\n";
+        std::cerr << "specsim: " << spec::printable(e.what()) << "\n";
         return 2;
     }
 }
