@@ -170,6 +170,22 @@ TEST(SpecStream, ResetInTheMiddleOfASpan) {
     }
 }
 
+// The longest spans the descriptor can ask for (l = 65535, every bit of the length field) and the bits
+// between the fields all ones: still l + 1 pixels each, equal to the model, tlast on the last only.
+TEST(SpecStream, LongestSpansAndIgnoredDescriptorBits) {
+    const Model m;
+    StreamDriver<Vspec_stream> d;
+    d.set_ignored_bits(true);
+    std::mt19937_64 rng(26);
+    std::vector<SpanRegs> spans;
+    spans.push_back(SpanRegs{0xffff, m.quantize_angle(3.0 / 65535), m.quantize_angle(-1.5), 1023, 65535});
+    spans.push_back(SpanRegs{0x8000, m.quantize_angle(-1e-6), m.quantize_angle(0.2), 7, 0});
+    spans.push_back(SpanRegs{0x1234, m.quantize_angle(-1.0 / 40000), m.quantize_angle(0.5), 100, 40000});
+    const auto more = random_spans(rng, m, 50, 30);
+    spans.insert(spans.end(), more.begin(), more.end());
+    expect_pixels(m, spans, d.run(spans, Stalls{0.9, 0.7}, rng));
+}
+
 // The UP5K configuration (4 x 256 interpolated tables, 16-bit ROM 9): bit-exact with its model, and
 // within the same per-n double-precision bounds as the patent configuration.
 TEST(SpecStreamUp5k, EqualsModelAndKeepsTheAccuracyBound) {

@@ -52,6 +52,8 @@ public:
     }
     V& top() { return *top_; }
     uint64_t cycle() const { return cycle_; }
+    // Descriptors with every ignored bit set (docs/stream.md: "the bits between the fields are ignored").
+    void set_ignored_bits(bool ones) { ignored_ones_ = ones; }
 
     void reset() {
         top_->rst_n = 0;
@@ -87,6 +89,10 @@ public:
             if (offering) {
                 uint32_t w[4];
                 pack_descriptor(spans[next], w);
+                if (ignored_ones_) {  // the bits between the fields, which the core must ignore
+                    w[0] |= 0xfc000000u;
+                    w[1] |= 0xffff0000u;
+                }
                 for (int i = 0; i < 4; ++i) top_->s_axis_tdata[i] = w[i];
             }
             top_->m_axis_tready = ready(rng);
@@ -118,6 +124,7 @@ private:
     std::unique_ptr<VerilatedContext> ctx_;  // heap-allocated, destroyed after the model
     std::unique_ptr<V> top_;
     uint64_t cycle_ = 0;
+    bool ignored_ones_ = false;
 };
 
 }  // namespace spec
