@@ -1,5 +1,5 @@
 // fv_spec_unit - formal properties of spec_unit (the patent's core with control block 14), proved by
-// formal/formal.py (make formal) with yosys-smtbmc and z3 at the reduced widths of formal/widths.txt.
+// formal/formal.py (make formal) with yosys-smtbmc and z3 at the reduced widths of formal.py (WIDTHS).
 //
 // The core is `fv_core_unit`: rtl/spec_unit.v at those widths, flattened by Yosys, with a few internal
 // registers made ports (`expose`, listed in formal.py) so that the properties can name them; rtl/ is not
