@@ -160,6 +160,11 @@ fusesoc: build deps-synth
 LONG_PIXELS ?= 100000000
 FUZZ_TIME ?= 60
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+# g++ 12 miscompiles UBSan's null check on a thread_local's address (Verilated::t_s, inlined from verilated.h):
+# `mov %fs:0,%rax; lea -0x80(%rax),%rax; je <report>` branches on stale flags and reports a null pointer that is
+# not there (docs/verification.md). test-asan leaves that one check out; AddressSanitizer still stops on any real
+# null dereference, and make fuzz (clang) keeps it.
+SAN_FLAGS_GCC := $(SAN_FLAGS) -fno-sanitize=null
 
 deps-formal:
 	@scripts/deps.sh z3 python3
@@ -180,7 +185,7 @@ test-long: build
 	SPEC_LONG_PIXELS=$(LONG_PIXELS) $(BUILD)/spec_long
 
 test-asan: deps
-	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS)" \
+	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
 	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
 	cmake --build $(BUILD)-asan -j$(JOBS)
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
