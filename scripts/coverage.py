@@ -94,12 +94,14 @@ def main():
         print("%-20s %18s %20s" % ("RTL file", "line", "toggle"))
     tot_l = [0, 0]
     tot_t = [0, 0]
+    nodata = []
     for f in rtl_files:
         l, t = per[f]["line"], per[f]["toggle"]
         tot_l = [tot_l[0] + l[0], tot_l[1] + l[1]]
         tot_t = [tot_t[0] + t[0], tot_t[1] + t[1]]
         pl, pt = pct(*l), pct(*t)
-        ls = "%6.1f %% (%d/%d)" % (pl, l[0], l[1]) if pl is not None else "no statements"
+        ls = "%6.1f %% (%d/%d)" % (pl, l[0], l[1]) if pl is not None else "no statements" if pt is not None \
+            else "NO DATA"
         ts = "%6.1f %% (%d/%d)" % (pt, t[0], t[1]) if pt is not None else "-"
         if a.markdown:
             print("| `%s` | %s | %s |" % (f, ls.replace("  ", " ").strip(), ts.strip()))
@@ -107,6 +109,8 @@ def main():
             print("%-20s %18s %20s" % (f, ls, ts))
         if a.goal is not None and f not in allow and pl is not None and pl < a.goal:
             below.append(f)
+        if a.goal is not None and pl is None and pt is None:
+            nodata.append(f)   # no point at all: its model never wrote coverage (not "no statements")
     if a.markdown:
         print("| all | %.1f %% (%d/%d) | %.1f %% (%d/%d) |" % (pct(*tot_l), tot_l[0], tot_l[1], pct(*tot_t),
                                                             tot_t[0], tot_t[1]))
@@ -129,8 +133,12 @@ def main():
             subprocess.run([vc, "--annotate", a.annotate, "--annotate-min", "1", merged], check=True,
                            stdout=subprocess.DEVNULL)
             print("annotated sources: %s (lines marked %%000000 never ran)" % a.annotate)
+    if nodata:
+        print("coverage: no coverage data at all for %s (did its model's final() run?)" % ", ".join(nodata),
+              file=sys.stderr)
     if below:
         print("coverage: line coverage below %.0f %% in %s" % (a.goal, ", ".join(below)), file=sys.stderr)
+    if below or nodata:
         return 1
     return 0
 
