@@ -48,23 +48,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         spec::hex_image(r12, f.rom12_dw(), "ROM 12");
         spec::verilog_header(f);
         spec::cpp_header(f);
-        const spec::Model m(f);
-        // a few spans with raw register contents
-        for (int s = 0; s < 4 && !in.empty(); ++s) {
-            spec::SpanRegs r;
-            r.c = static_cast<uint32_t>(in.range(0, (int64_t(1) << f.c_w) - 1));
-            r.n = static_cast<uint32_t>(in.range(0, (int64_t(1) << f.n_w) - 1));
-            r.len = static_cast<uint32_t>(in.range(0, std::min<int64_t>(64, (int64_t(1) << std::min(f.l_w, 20)) - 1)));
-            r.zeta0 = in.range(m.angle_min(), m.angle_max());
-            r.dzeta = in.range(m.angle_min(), m.angle_max());
-            const auto px = m.span(r);
-            fuzz::check(px.size() == r.len + 1u, "span length");
-            for (uint32_t v : px) fuzz::check(v <= r.c, "pixel above C");
-        }
     } catch (const std::out_of_range& e) {
         fuzz::one_line(e.what());
+        return 0;
     } catch (const std::invalid_argument& e) {
         fuzz::one_line(e.what());
+        return 0;
+    }
+    // a format the generator accepted gives a working model: any exception from here on escapes (a crash)
+    const spec::Model m(f);
+    // a few spans with raw register contents
+    for (int s = 0; s < 4 && !in.empty(); ++s) {
+        spec::SpanRegs r;
+        r.c = static_cast<uint32_t>(in.range(0, (int64_t(1) << f.c_w) - 1));
+        r.n = static_cast<uint32_t>(in.range(0, (int64_t(1) << f.n_w) - 1));
+        r.len = static_cast<uint32_t>(in.range(0, std::min<int64_t>(64, (int64_t(1) << std::min(f.l_w, 20)) - 1)));
+        r.zeta0 = in.range(m.angle_min(), m.angle_max());
+        r.dzeta = in.range(m.angle_min(), m.angle_max());
+        const auto px = m.span(r);
+        fuzz::check(px.size() == r.len + 1u, "span length");
+        for (uint32_t v : px) fuzz::check(v <= r.c, "pixel above C");
     }
     return 0;
 }

@@ -3,7 +3,9 @@
 // that is zero or not finite, a strength that is negative or not finite, n or l outside the formats; else
 // register contents the core accepts - C a UQ0.16 code, the angles and the span's last angle inside
 // [-8, 8), n and l as given - and finite values everywhere, whatever degenerate case the span is.
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <stdexcept>
 
 #include "fuzz_input.h"
@@ -22,6 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (shared & 2) e.h2 = e.h1;
     if (shared & 4) e.n2 = -e.n1;
     if (shared & 8) e.h1 = e.n1;
+    if (shared & 64) e.h2 = -e.h1;   // opposite halfway vectors (gamma = pi, fuzz/regress/host)
     const double strength = (shared & 16) ? in.real(2.0) : std::fabs(in.real(1.0));
     const unsigned n = static_cast<unsigned>(in.range(0, 1100));
     const uint32_t l = static_cast<uint32_t>(in.range(0, 70000));
@@ -31,6 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         s = spec::host::setup_span(m, e, strength, n, l, rule);
     } catch (const std::invalid_argument& x) {
         fuzz::one_line(x.what());
+        // only bad input may be rejected: a zero or non-finite vector, a bad strength, n or l
+        bool bad = !std::isfinite(strength) || strength < 0.0 || n >= 1024 || l >= 65536;
+        for (int k = 0; k < 4; ++k) {
+            const Vec& w = *v[k];
+            const double big = std::max({std::fabs(w.x), std::fabs(w.y), std::fabs(w.z)});
+            bad = bad || !std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) || !(big > 1e-300);
+        }
+        fuzz::check(bad, std::string("valid input rejected: ") + x.what());
         return 0;
     }
     fuzz::check(n < 1024 && l < 65536, "accepted n or l outside the formats");

@@ -75,9 +75,12 @@ private:
 inline void check(bool ok, const std::string& what) {
     if (!ok) fail(what);
 }
-// Messages the programs print are one line.
+// Messages the programs print are one printable line: not empty, no newline, carriage return or other
+// control character (input echoed in a message is escaped, spec::printable).
 inline void one_line(const char* msg) {
-    check(std::strchr(msg, '\n') == nullptr && *msg != '\0', std::string("message not one line: '") + msg + "'");
+    bool ok = *msg != '\0';
+    for (const char* c = msg; *c; ++c) ok = ok && static_cast<unsigned char>(*c) >= 0x20 && *c != 0x7f;
+    check(ok, std::string("message not one printable line: '") + msg + "'");
 }
 
 }  // namespace fuzz

@@ -11,14 +11,17 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "cli.h"
+
 namespace spec {
 namespace render {
 
 using glm::dvec3;
 
 // Bad input (a file, an option): one-line message; specsim prints it and exits 2.
+// Control characters from the input (an OBJ token, a name) are escaped (spec::printable, rom/gen/cli.h).
 struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit InputError(const std::string& what) : std::runtime_error(spec::printable(what)) {}
 };
 
 struct Mesh {
