@@ -123,6 +123,8 @@ module fv_spec_unit (
             // what a write while idle does
             if (!$past(busy) && $past(c_we)) assert (c_q == $past(c_i));
             if (!$past(busy) && $past(n_we)) assert (n_q == $past(n_i));
+            if (!$past(busy) && $past(dzeta_we)) assert (dzeta_q == $past(dzeta_i));
+            if (!$past(busy) && $past(zeta0_we)) assert (zeta0_q == $past(zeta0_i));
         end
         // init_n = 0: idle from the next cycle, everything cleared
         if (f_past && !$past(init_n)) begin
