@@ -50,8 +50,11 @@ configure: $(BUILD)/CMakeCache.txt
 
 # Verilator 5.006's CMake integration lists the generated sources at configure time: after an RTL change that
 # changes that list, the first build can compile a stale list and fail; re-configuring and building again fixes it.
+# $(call cmake_build,DIR[,--target ...]) builds a configured tree that way.
+cmake_build = cmake --build $(1) -j$(JOBS) $(2) || (cmake $(1) > /dev/null && cmake --build $(1) -j$(JOBS) $(2))
+
 build: deps configure
-	cmake --build $(BUILD) -j$(JOBS) || (cmake $(BUILD) > /dev/null && cmake --build $(BUILD) -j$(JOBS))
+	$(call cmake_build,$(BUILD))
 
 ctest: build
 	cd $(BUILD) && ctest -j$(JOBS) --output-on-failure
@@ -181,8 +184,7 @@ formal-mutants: deps deps-formal configure
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
-	cmake --build $(BUILD)-cov -j$(JOBS) --target spec_tests specsim || \
-	    (cmake $(BUILD)-cov > /dev/null && cmake --build $(BUILD)-cov -j$(JOBS) --target spec_tests specsim)
+	$(call cmake_build,$(BUILD)-cov,--target spec_tests specsim)
 	rm -rf $(BUILD)-cov/coverage $(BUILD)-cov/annotated
 	cd $(BUILD)-cov && SPEC_COVERAGE_DIR=coverage ./spec_tests --gtest_brief=1
 	python3 scripts/coverage.py --goal 95 --uncovered --annotate $(BUILD)-cov/annotated $(BUILD)-cov/coverage
@@ -194,8 +196,7 @@ test-long: build
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
 	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
-	cmake --build $(BUILD)-asan -j$(JOBS) || \
-	    (cmake $(BUILD)-asan > /dev/null && cmake --build $(BUILD)-asan -j$(JOBS))
+	$(call cmake_build,$(BUILD)-asan)
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    ctest -j$(JOBS) --output-on-failure
 	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
@@ -206,6 +207,5 @@ deps-fuzz:
 fuzz: deps deps-fuzz
 	cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DCMAKE_CXX_COMPILER=clang++ -DSPEC_FUZZ=ON \
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
-	cmake --build $(BUILD)-fuzz -j$(JOBS) --target fuzz_cli fuzz_format fuzz_host fuzz_obj fuzz_specsim || \
-	    (cmake $(BUILD)-fuzz > /dev/null && cmake --build $(BUILD)-fuzz -j$(JOBS) --target fuzz_cli fuzz_format fuzz_host fuzz_obj fuzz_specsim)
+	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)
