@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <algorithm>
 #include <deque>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -21,6 +22,7 @@
 #include "Vspec_unit.h"
 #include "Vspec_unit_tuned.h"
 #include "analysis.h"
+#include "cli.h"
 #include "spec_model.h"
 #include "stream_driver.h"
 #include "unit_driver.h"
@@ -31,13 +33,12 @@ namespace {
 uint64_t env_u64(const char* name, uint64_t dflt) {
     const char* v = std::getenv(name);
     if (!v || !*v) return dflt;
-    char* end = nullptr;
-    const unsigned long long x = std::strtoull(v, &end, 0);
-    if (*end != '\0') {
-        std::fprintf(stderr, "%s: '%s' is not a number\n", name, v);
+    try {
+        return static_cast<uint64_t>(parse_int(name, v, 0, std::numeric_limits<long long>::max()));
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "spec_long: %s\n", e.what());
         std::exit(2);
     }
-    return x;
 }
 const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
 const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
