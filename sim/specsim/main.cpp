@@ -444,10 +444,7 @@ int main(int argc, char** argv) {
         if (cmd == "compare") return cmd_compare(argc, argv);
         if (cmd == "tables") return cmd_tables(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
-    } catch (const UsageError& e) {
-        std::cerr << "specsim: " << spec::printable(e.what()) << "\n";
-        return 2;
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {   // UsageError and every other error: one line, exit 2
         std::cerr << "specsim: " << spec::printable(e.what()) << "\n";
         return 2;
     }
