@@ -6,7 +6,7 @@
 // Two spec_params.vh of different configurations in one compilation: the first one's macros would win
 // silently. Put one configuration's directory on the include path; pass other configurations' values
 // as parameters of the instances (docs/interface.md, "Configurations").
-spec_params_vh_error two_different_configurations_included;
+`include "ERROR_two_spec_params_vh_of_different_configurations_in_one_compilation"
 `endif
 `else
 `define SPEC_PARAMS_VH

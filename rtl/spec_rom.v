@@ -8,15 +8,23 @@
 //   - it holds fewer or more than 2^AW words,
 //   - a word has more hex digits than DW bits need, or a value that does not fit DW bits,
 //   - a line is neither a word, a `//` comment nor blank (address lines `@...` are not supported).
+//   - HEADER = 9 or 12: the first line is not specrom's header of ROM 9 / ROM 12, or it names other parameters
+//     than H0..H4 (ROM 9: N_W, SCALE_W, SCALE_FRAC, DECODER_ROM, TSEL_W; ROM 12: TBL_AW, TSEL_W, TBL_FRAC, INTERP,
+//     DELTA_W; -1: any value) - the parameters the image was made for, which specrom writes there.
 // Synthesis tools define SYNTHESIS and skip these checks; the project's synthesis flows run syn/rom_check.py
-// on the images before Yosys reads them. spec_rom9 and spec_rom12 also check the parameters in the image's
-// first line against their own.
+// on the images before Yosys reads them.
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_rom #(
     parameter AW = 10,
     parameter DW = 18,
-    parameter INIT_FILE = ""
+    parameter INIT_FILE = "",
+    parameter HEADER = 0,    // 0: no header line expected; 9, 12: specrom's header of ROM 9 / ROM 12
+    parameter H0 = -1,
+    parameter H1 = -1,
+    parameter H2 = -1,
+    parameter H3 = -1,
+    parameter H4 = -1
 ) (
     input  wire          clk,
     input  wire          en,
@@ -28,7 +36,9 @@ module spec_rom #(
 `ifndef SYNTHESIS
     localparam DIGITS = (DW + 3) / 4;
     localparam LINE_CHARS = 48;   // a word line fits; longer (comment) lines are read in pieces
-    integer fd, got, lineno, words, pos, digits, first;
+    localparam HEAD_CHARS = 256;
+    integer fd, got, lineno, words, pos, digits, first, f0, f1, f2, f3, f4;
+    reg [8*HEAD_CHARS-1:0] hline;
     reg [8*LINE_CHARS-1:0] line;
     reg [7:0] ch;
     reg [63:0] value;
@@ -41,6 +51,40 @@ module spec_rom #(
             $display("spec_rom: simulator's working directory: pass the ROM path parameters or include a header");
             $display("spec_rom: made by 'specrom --out DIR', docs/interface.md)");
             $fatal(1);
+        end
+        if (HEADER != 0) begin
+            hline = {8 * HEAD_CHARS{1'b0}};
+            got = $fgets(hline, fd);
+            if (got > 0) hline = hline | ({HEAD_CHARS{8'h20}} << (8 * got));  // blanks, not NULs, above
+            if (HEADER == 9)
+                got = $sscanf(hline, " // specrom ROM 9: n_w=%d scale_w=%d scale_frac=%d decoder_rom=%d tsel_w=%d",
+                              f0, f1, f2, f3, f4);
+            else
+                got = $sscanf(hline, " // specrom ROM 12: tbl_aw=%d tsel_w=%d tbl_frac=%d interp=%d delta_w=%d",
+                              f0, f1, f2, f3, f4);
+            if (got != 5) begin
+                $display("spec_rom: ROM image '%0s' does not start with specrom's ROM %0d line: make it with specrom (%m)",
+                         INIT_FILE, HEADER);
+                $fatal(1);
+            end
+            if ((H0 >= 0 && f0 != H0) || (H1 >= 0 && f1 != H1) || (H2 >= 0 && f2 != H2) || (H3 >= 0 && f3 != H3) ||
+                (H4 >= 0 && f4 != H4)) begin
+                $display("spec_rom: ROM image '%0s' was made for other parameters (%m):", INIT_FILE);
+                if (HEADER == 9) begin
+                    $display("spec_rom:   image N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",
+                             f0, f1, f2, f3, f4);
+                    $display("spec_rom:   core  N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",
+                             H0, H1, H2, H3, H4);
+                end else begin
+                    $display("spec_rom:   image TBL_AW=%0d TSEL_W=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d",
+                             f0, f1, f2, f3, f4);
+                    $display("spec_rom:   core  TBL_AW=%0d TSEL_W=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d",
+                             H0, H1, H2, H3, H4);
+                end
+                $fatal(1);
+            end
+            $fclose(fd);
+            fd = $fopen(INIT_FILE, "r");   // the words from the top (the header is a comment to them)
         end
         words = 0;
         lineno = 0;

@@ -6,7 +6,7 @@
 // Words UQ1.TBL_FRAC (TBL_FRAC + 1 bits): 1.0 exact; with interpolation (INTERP = 1, not in the patent) each
 // word also carries the step to the next position in DELTA_W bits above the value.
 // The image's first line (written by specrom) names the parameters it was made for; a simulation whose
-// parameters differ stops at time 0 with a message naming the file and the field (spec_rom checks the rest).
+// parameters differ stops at time 0 with a message naming the file and the fields (spec_rom, HEADER = 12).
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_rom12 #(
@@ -27,43 +27,14 @@ module spec_rom12 #(
     spec_rom #(
         .AW(TBL_AW + TSEL_W),
         .DW(WORD_W),
-        .INIT_FILE(INIT_FILE)
+        .INIT_FILE(INIT_FILE),
+        .HEADER(12), .H0(TBL_AW), .H1(TSEL_W), .H2(TBL_FRAC), .H3((INTERP != 0) ? 1 : 0),
+        .H4((INTERP != 0) ? DELTA_W : -1)
     ) u_mem (
         .clk (clk),
         .en  (en),
         .addr({table_sel, index}),
         .data(value)
     );
-
-`ifndef SYNTHESIS
-    integer fd, got, f_tbl_aw, f_tsel_w, f_tbl_frac, f_interp, f_delta_w;
-    reg [8*256-1:0] line;
-    initial begin
-        fd = $fopen(INIT_FILE, "r");
-        if (fd != 0) begin   // spec_rom reports a file that cannot be opened
-            line = 0;
-            got = $fgets(line, fd);
-            $fclose(fd);
-            // blanks above the characters read (Verilator's $sscanf does not skip the NUL bytes there)
-            if (got > 0) line = line | ({256{8'h20}} << (8 * got));
-            got = $sscanf(line, " // specrom ROM 12: tbl_aw=%d tsel_w=%d tbl_frac=%d interp=%d delta_w=%d",
-                          f_tbl_aw, f_tsel_w, f_tbl_frac, f_interp, f_delta_w);
-            if (got != 5) begin
-                $display("spec_rom12: ROM image '%0s' does not start with specrom's ROM 12 line (%m); make it with specrom",
-                         INIT_FILE);
-                $fatal(1);
-            end
-            if (f_tbl_aw != TBL_AW || f_tsel_w != TSEL_W || f_tbl_frac != TBL_FRAC || f_interp != ((INTERP != 0) ? 1 : 0) ||
-                (INTERP != 0 && f_delta_w != DELTA_W)) begin
-                $display("spec_rom12: ROM image '%0s' was made for other parameters (%m):", INIT_FILE);
-                $display("spec_rom12:   image: TBL_AW=%0d TSEL_W=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d",
-                         f_tbl_aw, f_tsel_w, f_tbl_frac, f_interp, f_delta_w);
-                $display("spec_rom12:   core:  TBL_AW=%0d TSEL_W=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d",
-                         TBL_AW, TSEL_W, TBL_FRAC, INTERP, DELTA_W);
-                $fatal(1);
-            end
-        end
-    end
-`endif
 endmodule
 `default_nettype wire

@@ -8,7 +8,7 @@
 //                 the scale, the table of ROM 12 for that n - decoder 10 as a ROM, which the patent allows
 //                 ("decoder 10 may also be a ROM"). The generator fills both fields (specrom --mode tuned).
 // The image's first line (written by specrom) names the parameters it was made for; a simulation whose
-// parameters differ stops at time 0 with a message naming the file and the field (spec_rom checks the rest).
+// parameters differ stops at time 0 with a message naming the file and the fields (spec_rom, HEADER = 9).
 `timescale 1ns / 1ps
 `default_nettype none
 module spec_rom9 #(
@@ -30,7 +30,9 @@ module spec_rom9 #(
     spec_rom #(
         .AW(N_W),
         .DW(DW),
-        .INIT_FILE(INIT_FILE)
+        .INIT_FILE(INIT_FILE),
+        .HEADER(9), .H0(N_W), .H1(SCALE_W), .H2(SCALE_FRAC), .H3((DECODER_ROM != 0) ? 1 : 0),
+        .H4((DECODER_ROM != 0) ? TSEL_W : -1)
     ) u_mem (
         .clk (clk),
         .en  (en),
@@ -45,36 +47,5 @@ module spec_rom9 #(
             assign table_sel = {TSEL_W{1'b0}};
         end
     endgenerate
-
-`ifndef SYNTHESIS
-    integer fd, got, f_n_w, f_scale_w, f_scale_frac, f_decoder_rom, f_tsel_w;
-    reg [8*256-1:0] line;
-    initial begin
-        fd = $fopen(INIT_FILE, "r");
-        if (fd != 0) begin   // spec_rom reports a file that cannot be opened
-            line = 0;
-            got = $fgets(line, fd);
-            $fclose(fd);
-            // blanks above the characters read (Verilator's $sscanf does not skip the NUL bytes there)
-            if (got > 0) line = line | ({256{8'h20}} << (8 * got));
-            got = $sscanf(line, " // specrom ROM 9: n_w=%d scale_w=%d scale_frac=%d decoder_rom=%d tsel_w=%d",
-                          f_n_w, f_scale_w, f_scale_frac, f_decoder_rom, f_tsel_w);
-            if (got != 5) begin
-                $display("spec_rom9: ROM image '%0s' does not start with specrom's ROM 9 line (%m); make it with specrom",
-                         INIT_FILE);
-                $fatal(1);
-            end
-            if (f_n_w != N_W || f_scale_w != SCALE_W || f_scale_frac != SCALE_FRAC ||
-                f_decoder_rom != DECODER_ROM || (DECODER_ROM != 0 && f_tsel_w != TSEL_W)) begin
-                $display("spec_rom9: ROM image '%0s' was made for other parameters (%m):", INIT_FILE);
-                $display("spec_rom9:   image: N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",
-                         f_n_w, f_scale_w, f_scale_frac, f_decoder_rom, f_tsel_w);
-                $display("spec_rom9:   core:  N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",
-                         N_W, SCALE_W, SCALE_FRAC, DECODER_ROM, TSEL_W);
-                $fatal(1);
-            end
-        end
-    end
-`endif
 endmodule
 `default_nettype wire

@@ -216,7 +216,7 @@ std::string verilog_header(const Format& f, const std::string& rom_dir) {
       << "// Two spec_params.vh of different configurations in one compilation: the first one's macros would win\n"
       << "// silently. Put one configuration's directory on the include path; pass other configurations' values\n"
       << "// as parameters of the instances (docs/interface.md, \"Configurations\").\n"
-      << "spec_params_vh_error two_different_configurations_included;\n"
+      << "`include \"ERROR_two_spec_params_vh_of_different_configurations_in_one_compilation\"\n"
       << "`endif\n"
       << "`else\n"
       << "`define SPEC_PARAMS_VH\n"
