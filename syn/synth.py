@@ -32,7 +32,7 @@ CONFIGS = {
 }
 
 # Goals from the issue: 1080p30 of pixels on the UP5K, 1080p60 on the ECP5.
-GOALS = {"ice40-up5k": 62.2, "ecp5-25f": 125.0, "xc7": None}
+GOALS = {"ice40-up5k": 74.25, "ecp5-25f": 148.5, "xc7": None}
 LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280}, "ecp5-25f": {"bram": 56, "dsp": 28, "lut": 24288}}
 
 CELLS = {

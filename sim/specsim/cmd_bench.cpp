@@ -232,7 +232,9 @@ int cmd_stream_diagram(int argc, char** argv) {
     std::vector<std::string> rows(7);
     std::vector<uint32_t> px;
     size_t next = 0;
-    const int ncyc = 32;
+    // the sink stalls for two cycles while the second and third spans come out (after the core's latency)
+    const int stall0 = spec_params::STREAM_LATENCY + 4;
+    const int ncyc = spec_params::STREAM_LATENCY + 12;
     for (int c = 0; c < ncyc; ++c) {
         t.s_axis_tvalid = next < spans.size();
         if (next < spans.size()) {
@@ -240,7 +242,7 @@ int cmd_stream_diagram(int argc, char** argv) {
             pack_descriptor(spans[next], w);
             for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
         }
-        t.m_axis_tready = !(c == 24 || c == 25);  // the sink stalls for two cycles
+        t.m_axis_tready = !(c == stall0 || c == stall0 + 1);
         t.eval();
         const bool in_fire = t.s_axis_tvalid && t.s_axis_tready;
         const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
@@ -252,8 +254,8 @@ int cmd_stream_diagram(int argc, char** argv) {
         if (in_fire) ++next;
     }
     std::ostringstream o;
-    o << "spec_stream: descriptors l = 2, 0, 1 back to back, the sink stalls in cycles 24-25; one character per\n"
-      << "clock, from the Verilated spec_stream (specsim stream-diagram)\n\n";
+    o << "spec_stream: descriptors l = 2, 0, 1 back to back, the sink stalls in cycles " << stall0 << "-" << stall0 + 1
+      << "; one character per\nclock, from the Verilated spec_stream (specsim stream-diagram)\n\n";
     std::string ruler;
     for (int c = 0; c < ncyc; ++c) ruler += (c % 5 == 0) ? std::to_string(c % 10) : " ";
     o << "                 " << ruler << "\n";
