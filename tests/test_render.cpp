@@ -1,8 +1,6 @@
 // The renderer: rasterizer coverage and normals, the models' images against each other, OBJ input, PNG,
 // plots, and `specsim render` as a user runs it (bad input: one line, exit 2, no output file).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "common.h"
 #include "image.h"
 #include "mesh.h"
 #include "raster.h"
@@ -22,45 +21,9 @@
 
 using namespace spec;
 using namespace spec::render;
+using namespace spec::test;
 
 namespace {
-struct CliRun {
-    int code;
-    std::string out, err;
-};
-
-std::string tmpdir() {
-    static const std::string d = [] {
-        std::string t = ::testing::TempDir() + "/render_test." + std::to_string(getpid());
-        std::system(("mkdir -p '" + t + "'").c_str());
-        return t;
-    }();
-    return d;
-}
-
-CliRun specsim(const std::string& args) {
-    const std::string ef = tmpdir() + "/err.txt";
-    const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + ef + " </dev/null";
-    CliRun r;
-    FILE* p = popen(cmd.c_str(), "r");
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, k);
-    const int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::ifstream e(ef);
-    std::stringstream ss;
-    ss << e.rdbuf();
-    r.err = ss.str();
-    return r;
-}
-
-bool exists(const std::string& p) { return std::ifstream(p).good(); }
-
-void write(const std::string& p, const std::string& text) {
-    std::ofstream o(p);
-    o << text;
-}
 
 
 Image render_scene(const Scene& sc, int size, SpecModel m, RgbMode rgb = RgbMode::once, Shading* base = nullptr) {
@@ -263,7 +226,7 @@ TEST(Obj, RoundTripThroughTinyobjloaderRendersTheSame) {
 
 TEST(Obj, NormalsAveragedWhenAbsent) {
     const std::string p = tmpdir() + "/tet.obj";
-    write(p, "# a tetrahedron without normals\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+    write_file(p, "# a tetrahedron without normals\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
              "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     const Mesh m = load_obj(p);
     EXPECT_EQ(m.tri.size(), 4u);
@@ -316,13 +279,13 @@ TEST(Specsim, RenderWritesImagePanelAndStats) {
 
 TEST(Specsim, RenderBadInputExitsTwoWithoutOutput) {
     const std::string d = tmpdir();
-    write(d + "/quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
-    write(d + "/nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan 0 1\nf 1//1 2//1 3//1\n");
-    write(d + "/zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
-    write(d + "/malformed.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n");
-    write(d + "/index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-    write(d + "/empty.obj", "# nothing\n");
-    write(d + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");  // only a degenerate face: no normal
+    write_file(d + "/quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    write_file(d + "/nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan 0 1\nf 1//1 2//1 3//1\n");
+    write_file(d + "/zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    write_file(d + "/malformed.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n");
+    write_file(d + "/index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    write_file(d + "/empty.obj", "# nothing\n");
+    write_file(d + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");  // only a degenerate face: no normal
     const char* bad[] = {
         "--obj /nonexistent/file.obj",
         "--obj @/quad.obj",

@@ -8,34 +8,16 @@
 
 #include "Vspec_unit.h"
 #include "analysis.h"
+#include "common.h"
 #include "spec_model.h"
 #include "unit_driver.h"
 
 using namespace spec;
+using namespace spec::test;
 
 namespace {
 double scale_of(unsigned n) { return std::sqrt(double(n) / k_of_n(n)); }
 
-struct RandomSpan {
-    SpanRegs regs;
-    double c, zeta0, dzeta;  // the decimal values given (before quantization)
-};
-
-// A span around the highlight of n: angles inside [-pi, pi], mostly within a few epicentres.
-RandomSpan random_span(std::mt19937_64& rng, const Model& m, unsigned n, uint32_t max_len) {
-    RandomSpan s;
-    std::uniform_real_distribution<double> u01(0.0, 1.0);
-    s.c = u01(rng) * 0.999999;
-    // half of the spans stay near the epicentre, half reach well past the table's pi/2
-    const double reach = std::min(M_PI, (rng() % 2 ? 3.0 : 9.0) * epicentre_end(n) + 0.05 * u01(rng));
-    std::uniform_real_distribution<double> ang(-reach, reach);
-    const uint32_t len = static_cast<uint32_t>(rng() % (max_len + 1));
-    s.zeta0 = ang(rng);
-    const double end = ang(rng);
-    s.dzeta = len ? (end - s.zeta0) / len : 0.0;
-    s.regs = SpanRegs{m.quantize_c(s.c), m.quantize_angle(s.dzeta), m.quantize_angle(s.zeta0), n, len};
-    return s;
-}
 }  // namespace
 
 TEST(SpecUnit, EqualsBitExactModelOnRandomSpans) {

@@ -8,34 +8,15 @@
 #include "Vspec_stream.h"
 #include "Vspec_stream_up5k.h"
 #include "analysis.h"
+#include "common.h"
 #include "spec_model.h"
 #include "stream_driver.h"
 #include "unit_driver.h"
 
 using namespace spec;
+using namespace spec::test;
 
 namespace {
-// Random spans: short ones often (span boundaries are where a streaming core breaks), some long.
-std::vector<SpanRegs> random_spans(std::mt19937_64& rng, const Model& m, size_t count, uint32_t max_len) {
-    std::vector<SpanRegs> v;
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (size_t i = 0; i < count; ++i) {
-        SpanRegs r;
-        r.n = static_cast<uint32_t>(rng() % 1024);
-        r.c = static_cast<uint32_t>(rng() & 0xffff);
-        const int kind = static_cast<int>(rng() % 4);
-        r.len = kind == 0 ? 0 : kind == 1 ? static_cast<uint32_t>(rng() % 4) : static_cast<uint32_t>(rng() % (max_len + 1));
-        const double reach = std::min(M_PI, 6.0 * epicentre_end(r.n));
-        r.zeta0 = m.quantize_angle(reach * u(rng));
-        r.dzeta = m.quantize_angle(r.len ? (reach * u(rng) - m.angle_value(r.zeta0)) / r.len : 0.0);
-        if (rng() % 16 == 0) {  // raw register contents, saturating angles included
-            r.zeta0 = static_cast<int32_t>(rng());
-            r.dzeta = static_cast<int32_t>(rng()) >> (rng() % 32);
-        }
-        v.push_back(r);
-    }
-    return v;
-}
 
 void expect_pixels(const Model& m, const std::vector<SpanRegs>& spans, const std::vector<StreamPixel>& px) {
     size_t k = 0;
