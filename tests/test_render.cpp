@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "Vspec_stream.h"
 #include "common.h"
 #include "image.h"
 #include "mesh.h"
@@ -18,6 +19,8 @@
 #include "scene.h"
 #include "shade.h"
 #include "stats.h"
+#include "stream_driver.h"
+#include "unit_driver.h"
 
 using namespace spec;
 using namespace spec::render;
@@ -30,6 +33,10 @@ Image render_scene(const Scene& sc, int size, SpecModel m, RgbMode rgb = RgbMode
     const Frame f = rasterize(sc, size, size);
     const Shading b = shade_base(sc, f);
     if (base) *base = b;
+    if (m == SpecModel::rtl) {
+        UnitDriver core;   // the renderer takes the core it is given (sim/model/span_core.h)
+        return compose(b, shade_specular(sc, f, m, &core, rgb));
+    }
     return compose(b, shade_specular(sc, f, m, rgb));
 }
 
@@ -139,14 +146,35 @@ TEST(Render, RtlEqualsGoldenBitForBit) {
     Scene sc = make_scene("default");
     sc.validate();
     const Frame f = rasterize(sc, 160, 160);
-    const SpecRun a = shade_specular(sc, f, SpecModel::rtl, RgbMode::once);
+    UnitDriver unit;
+    const SpecRun a = shade_specular(sc, f, SpecModel::rtl, &unit, RgbMode::once);
     const SpecRun b = shade_specular(sc, f, SpecModel::golden, RgbMode::once);
     EXPECT_EQ(a.spec, b.spec);
     EXPECT_GT(a.core_cycles, 2 * a.core_pixels);
-    const SpecRun c = shade_specular(sc, f, SpecModel::rtl, RgbMode::per_channel);
+    const SpecRun c = shade_specular(sc, f, SpecModel::rtl, &unit, RgbMode::per_channel);
     const SpecRun d = shade_specular(sc, f, SpecModel::golden, RgbMode::per_channel);
     EXPECT_EQ(c.spec, d.spec);
     EXPECT_EQ(c.core_runs, 3 * a.core_runs);
+    // any SpanCore: the Verilated spec_stream gives the same picture; rtl without a core is refused
+    StreamCore<Vspec_stream> stream;
+    EXPECT_EQ(shade_specular(sc, f, SpecModel::rtl, &stream, RgbMode::once).spec, a.spec);
+    EXPECT_THROW(shade_specular(sc, f, SpecModel::rtl, RgbMode::once), std::invalid_argument);
+}
+
+// A core that drops a span's last pixel is an internal error of the renderer, not a silently short span.
+TEST(Render, ACoreThatLosesPixelsIsAnError) {
+    struct Short : SpanCore {
+        const Model m;
+        std::vector<uint32_t> span(const SpanRegs& r) override {
+            auto px = m.span(r);
+            if (px.size() > 1) px.pop_back();
+            return px;
+        }
+        uint64_t cycle() const override { return 0; }
+    } core;
+    Scene sc = make_scene("sphere");
+    sc.validate();
+    EXPECT_THROW(shade_specular(sc, rasterize(sc, 48, 48), SpecModel::rtl, &core, RgbMode::once), std::runtime_error);
 }
 
 // The bound: rtl and ref within 4 levels of 255 in every channel, default scene, at 256 and 512;

@@ -367,7 +367,7 @@ void write_obj(const Mesh& m, const std::string& path) {
         for (const auto& t : m.tri) o << "f " << t[0] + 1 << "//" << t[0] + 1 << " " << t[1] + 1 << "//" << t[1] + 1
                                       << " " << t[2] + 1 << "//" << t[2] + 1 << "\n";
         o.close();
-        if (!o) throw std::runtime_error("cannot write " + path);
+        if (!o) throw InputError("cannot write " + path);
     });
 }
 

@@ -20,9 +20,7 @@ using glm::dvec3;
 
 // Bad input (a file, an option): one-line message; specsim prints it and exits 2.
 // Control characters from the input (an OBJ token, a name) are escaped (spec::printable, rom/gen/cli.h).
-struct InputError : std::runtime_error {
-    explicit InputError(const std::string& what) : std::runtime_error(spec::printable(what)) {}
-};
+using spec::InputError;
 
 struct Mesh {
     std::vector<dvec3> pos;                      // vertex positions

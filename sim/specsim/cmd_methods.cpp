@@ -27,6 +27,7 @@
 #include "shade.h"
 #include "span_host.h"
 #include "stats.h"
+#include "unit_driver.h"
 
 namespace spec {
 
@@ -158,9 +159,11 @@ int cmd_highlight_impl(int argc, char** argv) {
         const double t0 = now_s();
         const methods::CullResult cr = methods::cull_spans(sc, fr, core);
         const double t_bound = now_s() - t0;
-        const render::SpecRun all = render::shade_specular(sc, fr, model, render::RgbMode::once);
+        // the renderer takes its core (sim/model/span_core.h): the Verilated spec_unit for --model rtl
+        const std::unique_ptr<SpanCore> unit = model == render::SpecModel::rtl ? make_unit_driver(Mode::patent) : nullptr;
+        const render::SpecRun all = render::shade_specular(sc, fr, model, unit.get(), render::RgbMode::once);
         const render::Frame kept = methods::kept_frame(fr, cr);
-        const render::SpecRun culled = render::shade_specular(sc, kept, model, render::RgbMode::once);
+        const render::SpecRun culled = render::shade_specular(sc, kept, model, unit.get(), render::RgbMode::once);
         const render::Image img_all = render::compose(base, all), img_cull = render::compose(base, culled);
         const render::ImageStats st = render::compare(img_cull, img_all, base.covered);
         // brute force: the golden core's output over every span, per triangle
