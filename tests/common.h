@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "analysis.h"
+#include "fit.h"
 #include "spec_model.h"
 
 namespace spec {
@@ -144,6 +145,41 @@ inline std::vector<SpanRegs> random_spans(std::mt19937_64& rng, const Model& m, 
     for (size_t i = 0; i < count; ++i) v.push_back(random_stream_span(rng, m, max_len));
     return v;
 }
+
+// The bound tests (docs/verification.md, "bound ratios"). Each pixel's error against double precision is held
+// to a bound computed per case, and two worst ratios are asserted against what they measure today:
+//   error_over_bound  |out - ref| / bound: how close the core comes to its bound (approximation + fixed point)
+//   fixed_over_slack  |out - C_q * approximation(x_q)| / slack: the fixed-point error alone (out against the
+//                     double-precision approximation at the angle register 8 holds, C as register 1 holds it)
+//                     over the bound's fixed-point allowance slack = 0.2 % + 2^-14 of ref in the epicentre,
+//                     0.2 % + 2^-13 of C outside it.
+// The approximation's own error dominates the first ratio, so a fixed point twice as coarse moves it by 2 %;
+// the second doubles with it. Each test asserts fixed_over_slack <= 1.25 x its measured worst, so a regression
+// to twice today's fixed-point error fails (tests/mutants.py shows it on a deliberately coarsened ROM 12).
+inline double approximation(const Format& f, unsigned n, double x) {
+    const TableFit& t = table_fits(f)[n];
+    return approx_scaled(t.k, t.scale, x);
+}
+inline double fixed_point_slack(unsigned n, double c, double angle, double ref) {
+    return std::fabs(angle) <= epicentre_end(n) ? 0.002 * ref + std::ldexp(1.0, -14) : 0.002 * c + std::ldexp(1.0, -13);
+}
+struct BoundRatios {
+    double error_over_bound = 0, fixed_over_slack = 0;
+    unsigned fixed_n = 0;
+    // One pixel of span r (index i, register 8 at angle_raw) from model m's format: out the core's word, ref the
+    // double reference, bound its bound, c the decimal C the reference uses.
+    void add(const Model& m, const SpanRegs& r, int64_t angle_raw, uint32_t out, double ref, double bound, double c,
+             double angle) {
+        const double o = m.out_value(out);
+        error_over_bound = std::max(error_over_bound, std::fabs(o - ref) / bound);
+        const double ideal = m.out_value(r.c) * approximation(m.format(), r.n, m.angle_value(angle_raw));
+        const double f = std::fabs(o - ideal) / fixed_point_slack(r.n, c, angle, ref);
+        if (f > fixed_over_slack) {
+            fixed_over_slack = f;
+            fixed_n = r.n;
+        }
+    }
+};
 
 }  // namespace test
 }  // namespace spec

@@ -187,14 +187,22 @@ TEST(SpecStreamUp5k, EqualsModelAndKeepsTheAccuracyBound) {
     }
     auto out = d.run(sweep, Stalls{}, rng);
     size_t k = 0;
+    BoundRatios worst;   // tests/common.h
     for (const auto& r : sweep) {
         const double c = m.out_value(r.c);
         for (int64_t a : m.angles(r)) {
             const double ang = m.angle_value(a);
             const double ref = c * std::pow(std::max(0.0, std::cos(ang)), double(r.n));
-            const double err = std::fabs(m.out_value(out[k++].value) - ref);
-            if (ang <= epicentre_end(r.n)) ASSERT_LE(err, ref * (e.q[r.n] + 0.002) + lsb14) << r.n << " " << ang;
-            else ASSERT_LE(err, c * (e.a[r.n] + 0.002) + lsb13) << r.n << " " << ang;
+            const uint32_t o = out[k++].value;
+            const double err = std::fabs(m.out_value(o) - ref);
+            const double bound = ang <= epicentre_end(r.n) ? ref * (e.q[r.n] + 0.002) + lsb14 : c * (e.a[r.n] + 0.002) + lsb13;
+            ASSERT_LE(err, bound) << r.n << " " << ang;
+            worst.add(m, r, a, o, ref, bound, c, ang);
         }
     }
+    // measured: 0.905 and 0.074 (n = 7: the interpolation keeps the fixed-point error small); asserted with the
+    // margins of tests/common.h
+    EXPECT_LE(worst.error_over_bound, 0.96);
+    EXPECT_LE(worst.fixed_over_slack, 0.093) << "fixed-point error grew (worst at n = " << worst.fixed_n << ")";
+    EXPECT_GE(worst.fixed_over_slack, 0.05) << "the measurement itself changed: re-measure and document";
 }
