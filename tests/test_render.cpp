@@ -308,17 +308,18 @@ TEST(Specsim, RenderWritesImagePanelAndStats) {
 TEST(Specsim, RenderBadInputExitsTwoWithoutOutput) {
     const std::string d = tmpdir();
     write_file(d + "/quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
-    write_file(d + "/nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan 0 1\nf 1//1 2//1 3//1\n");
-    write_file(d + "/zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    write_file(d + "/nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");   // a position (a normal would be computed)
+    write_file(d + "/two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n");
+    write_file(d + "/nonormal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n");
     write_file(d + "/malformed.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n");
     write_file(d + "/index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
     write_file(d + "/empty.obj", "# nothing\n");
-    write_file(d + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");  // only a degenerate face: no normal
+    write_file(d + "/flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 4 3\n");  // no face has an area
     const char* bad[] = {
         "--obj /nonexistent/file.obj",
-        "--obj @/quad.obj",
         "--obj @/nan.obj",
-        "--obj @/zero.obj",
+        "--obj @/two.obj",
+        "--obj @/nonormal.obj",
         "--obj @/malformed.obj",
         "--obj @/index.obj",
         "--obj @/empty.obj",

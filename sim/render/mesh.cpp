@@ -13,6 +13,7 @@
 #include <tiny_obj_loader.h>
 
 #include "fileutil.h"
+#include "polygon.h"
 
 namespace spec {
 namespace render {
@@ -89,9 +90,11 @@ bool parse_index(const std::string& s) {
     return *end == '\0' && v != 0;
 }
 
-// The checks tinyobjloader does not make (it reads "v 1 x 2" as (1, 0, 2) and splits polygons when asked):
-// every v / vn / vt / f record well formed, normals finite and non-zero, faces triangles.
-void check_obj_syntax(const std::string& path, std::istream& in) {
+// The checks tinyobjloader does not make (it reads "v 1 x 2" as (1, 0, 2)): every v / vn / vt / f record well
+// formed, positions finite, faces of three or more vertices. Returns per 'vn' record (in file order) 0 for a
+// usable normal, 1 for a zero-length one, 2 for a non-finite one: those are computed instead (load_obj).
+std::vector<uint8_t> check_obj_syntax(const std::string& path, std::istream& in) {
+    std::vector<uint8_t> vn_bad;
     std::string line;
     int no = 0;
     auto fail = [&](const std::string& why) {
@@ -119,15 +122,15 @@ void check_obj_syntax(const std::string& path, std::istream& in) {
             if (key == "v" && !(k == 3 || k == 4 || k == 6 || k == 7)) fail("a vertex needs 3 coordinates");
             if (key == "vn" && k != 3) fail("a normal needs 3 coordinates");
             if (key == "vt" && (k < 1 || k > 3)) fail("a texture coordinate needs 1 to 3 numbers");
-            for (double v : x) {
-                if (!std::isfinite(v)) fail("'" + key + "' record is not finite (" + line + ")");
+            bool finite_all = true;
+            for (double v : x) finite_all = finite_all && std::isfinite(v);
+            if (key == "vn") {
+                vn_bad.push_back(!finite_all ? 2 : (x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0) ? 1 : 0);
+            } else if (!finite_all) {
+                fail("'" + key + "' record is not finite (" + line + ")");
             }
-            if (key == "vn" && x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0) fail("zero-length normal");
         } else if (key == "f") {
             if (toks.size() < 3) fail("a face needs 3 vertices");
-            if (toks.size() != 3) {
-                fail("face with " + std::to_string(toks.size()) + " vertices: the OBJ must be triangulated");
-            }
             for (const auto& t : toks) {
                 // v, v/vt, v//vn, v/vt/vn
                 std::vector<std::string> parts;
@@ -143,6 +146,7 @@ void check_obj_syntax(const std::string& path, std::istream& in) {
         }
         // other records (o, g, s, usemtl, mtllib, l, p, ...) do not affect the triangles
     }
+    return vn_bad;
 }
 }  // namespace
 
@@ -258,14 +262,15 @@ Mesh make_teapot(int subdiv) {
     return m;
 }
 
-Mesh load_obj(const std::string& path) {
+Mesh load_obj(const std::string& path, ObjStats* stats) {
+    std::vector<uint8_t> vn_bad;
     {
         std::ifstream in(path);
         if (!in) throw InputError("cannot read OBJ file '" + path + "'");
-        check_obj_syntax(path, in);
+        vn_bad = check_obj_syntax(path, in);
     }
     tinyobj::ObjReaderConfig cfg;
-    cfg.triangulate = false;
+    cfg.triangulate = false;   // polygons are clipped here (polygon.h says why)
     cfg.vertex_color = false;
     const size_t slash = path.find_last_of('/');
     cfg.mtl_search_path = slash == std::string::npos ? "./" : path.substr(0, slash + 1);
@@ -278,76 +283,106 @@ Mesh load_obj(const std::string& path) {
     }
     const auto& at = r.GetAttrib();
     const size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3;
+    // positions divided by their largest magnitude for the geometry below: huge and tiny models alike
+    double big = 0;
+    for (double c : at.vertices) big = std::max(big, std::fabs(c));
+    if (!(big > 0)) big = 1;
+    auto scaled = [&](int v) {
+        const auto* p = &at.vertices[3 * size_t(v)];
+        return dvec3(p[0] / big, p[1] / big, p[2] / big);
+    };
+    ObjStats st;
+    st.loaded = true;
     Mesh m;
-    std::map<std::pair<int, int>, uint32_t> index;  // (position, normal) -> vertex
+    std::map<std::pair<int, int>, uint32_t> index;  // (position, usable normal or -1) -> vertex
     std::vector<int> pos_of;                          // vertex -> position index
-    std::vector<bool> given;                          // vertex has an OBJ normal
+    std::vector<bool> given;                          // vertex has a usable OBJ normal
+    std::vector<dvec3> poly;
+    std::vector<uint32_t> corner;
     for (const auto& sh : r.GetShapes()) {
         size_t k = 0;
         for (size_t f = 0; f < sh.mesh.num_face_vertices.size(); ++f) {
             const int fv = sh.mesh.num_face_vertices[f];
-            if (fv != 3) throw InputError(path + ": face with " + std::to_string(fv) + " vertices: the OBJ must be triangulated");
-            std::array<uint32_t, 3> t{};
-            for (int c = 0; c < 3; ++c) {
+            ++st.faces;
+            if (fv > 3) ++st.polygons;
+            poly.clear();
+            corner.clear();
+            for (int c = 0; c < fv; ++c) {
                 const auto& ix = sh.mesh.indices[k++];
                 if (ix.vertex_index < 0 || size_t(ix.vertex_index) >= nv) {
-                    throw InputError(path + ": face " + std::to_string(f + 1) + " refers to a vertex that does not exist");
+                    throw InputError(path + ": face " + std::to_string(st.faces) + " refers to a vertex that does not exist");
                 }
-                if (ix.normal_index >= 0 && size_t(ix.normal_index) >= nn) {
-                    throw InputError(path + ": face " + std::to_string(f + 1) + " refers to a normal that does not exist");
+                if (ix.normal_index >= 0 && (size_t(ix.normal_index) >= nn || size_t(ix.normal_index) >= vn_bad.size())) {
+                    throw InputError(path + ": face " + std::to_string(st.faces) + " refers to a normal that does not exist");
                 }
-                const auto key = std::make_pair(ix.vertex_index, ix.normal_index);
+                const uint8_t bad = ix.normal_index >= 0 ? vn_bad[size_t(ix.normal_index)] : 0;
+                const int normal = ix.normal_index >= 0 && bad == 0 ? ix.normal_index : -1;
+                const auto key = std::make_pair(ix.vertex_index, normal);
                 auto it = index.find(key);
                 if (it == index.end()) {
                     const auto* p = &at.vertices[3 * size_t(ix.vertex_index)];
                     m.pos.emplace_back(p[0], p[1], p[2]);
-                    if (ix.normal_index >= 0) {
-                        const auto* n = &at.normals[3 * size_t(ix.normal_index)];
-                        const dvec3 nv3(n[0], n[1], n[2]);
-                        if (!finite(nv3)) throw InputError(path + ": normal " + std::to_string(ix.normal_index + 1) + " is not finite");
-                        if (glm::length(nv3) < 1e-12) throw InputError(path + ": normal " + std::to_string(ix.normal_index + 1) + " has zero length");
-                        m.nrm.push_back(glm::normalize(nv3));
+                    if (normal >= 0) {
+                        const auto* q = &at.normals[3 * size_t(normal)];
+                        const dvec3 nq(q[0], q[1], q[2]);
+                        const double l = std::max({std::fabs(nq.x), std::fabs(nq.y), std::fabs(nq.z)});
+                        m.nrm.push_back(glm::normalize(nq / l));
                     } else {
                         m.nrm.emplace_back(0.0);
+                        if (ix.normal_index < 0) ++st.normals_missing;
+                        else if (bad == 1) ++st.normals_zero;
+                        else ++st.normals_not_finite;
                     }
                     pos_of.push_back(ix.vertex_index);
-                    given.push_back(ix.normal_index >= 0);
+                    given.push_back(normal >= 0);
                     it = index.emplace(key, uint32_t(m.pos.size() - 1)).first;
                 }
-                t[c] = it->second;
+                corner.push_back(it->second);
+                poly.push_back(scaled(ix.vertex_index));
             }
-            m.tri.push_back(t);
+            const auto tris = fv == 3 ? std::vector<std::array<uint32_t, 3>>{{0, 1, 2}} : triangulate_polygon(poly);
+            for (const auto& t : tris) {
+                const dvec3 e = glm::cross(poly[t[1]] - poly[t[0]], poly[t[2]] - poly[t[0]]);
+                if (!(glm::length(e) > 0)) {   // no area: nothing to draw, no direction to give a normal
+                    ++st.degenerate;
+                    continue;
+                }
+                m.tri.push_back({corner[t[0]], corner[t[1]], corner[t[2]]});
+            }
+            if (tris.size() < size_t(fv - 2)) st.degenerate += size_t(fv - 2) - tris.size();
         }
     }
-    if (m.tri.empty()) throw InputError(path + ": no triangles");
-    // Missing normals: angle-weighted average of the faces around the position.
+    if (m.tri.empty()) {
+        throw InputError(path + (st.faces ? ": no face has an area" : ": no triangles"));
+    }
+    st.triangles = m.tri.size();
+    // Smooth normals where the file gives none or an unusable one: the angle-weighted average of the unit normals
+    // of the faces around the position (Thuermer and Wuethrich), in the scaled coordinates.
     std::vector<dvec3> acc(nv, dvec3(0));
-    bool need = false;
-    for (bool g : given) need = need || !g;
-    if (need) {
+    std::vector<dvec3> any(nv, dvec3(0));   // a face normal at the position, for sums that cancel
+    if (st.normals_missing + st.normals_zero + st.normals_not_finite > 0) {
         for (const auto& t : m.tri) {
-            const dvec3 fnorm = glm::cross(m.pos[t[1]] - m.pos[t[0]], m.pos[t[2]] - m.pos[t[0]]);
-            if (glm::length(fnorm) == 0.0) continue;
-            const dvec3 fn = glm::normalize(fnorm);
+            const dvec3 p[3] = {scaled(pos_of[t[0]]), scaled(pos_of[t[1]]), scaled(pos_of[t[2]])};
+            const dvec3 fn = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
             for (int c = 0; c < 3; ++c) {
-                const dvec3 e1 = m.pos[t[(c + 1) % 3]] - m.pos[t[c]], e2 = m.pos[t[(c + 2) % 3]] - m.pos[t[c]];
+                const dvec3 e1 = p[(c + 1) % 3] - p[c], e2 = p[(c + 2) % 3] - p[c];
                 const double l1 = glm::length(e1), l2 = glm::length(e2);
-                if (l1 == 0 || l2 == 0) continue;
+                if (!(l1 > 0) || !(l2 > 0)) continue;
                 const double ang = std::acos(std::max(-1.0, std::min(1.0, glm::dot(e1, e2) / (l1 * l2))));
                 acc[size_t(pos_of[t[c]])] += ang * fn;
+                any[size_t(pos_of[t[c]])] = fn;
             }
         }
         for (size_t v = 0; v < m.pos.size(); ++v) {
             if (given[v]) continue;
             const dvec3 a = acc[size_t(pos_of[v])];
-            if (!(glm::length(a) > 1e-300)) {
-                throw InputError(path + ": vertex " + std::to_string(pos_of[v] + 1) +
-                                 " has no normal and only degenerate faces to make one from");
-            }
-            m.nrm[v] = glm::normalize(a);
+            const double l = glm::length(a);
+            m.nrm[v] = l > 1e-12 ? a / l : any[size_t(pos_of[v])];
+            if (!(glm::length(m.nrm[v]) > 0.5)) m.nrm[v] = dvec3(0, 0, 1);   // only on slivers of no area
         }
     }
     m.validate(path);
+    if (stats) *stats = st;
     return m;
 }
 

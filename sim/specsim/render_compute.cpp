@@ -63,6 +63,18 @@ RenderResult render_compute(const RenderOptions& ra, const render::Scene& sc, co
 }
 
 namespace {
+// A JSON string literal (the scene's name is an OBJ path: quotes, backslashes, control characters escaped)
+std::string json_str(const std::string& t) {
+    std::string o = "\"";
+    char b[8];
+    for (unsigned char c : t) {
+        if (c == '"' || c == '\\') o += '\\', o += char(c);
+        else if (c < 0x20) std::snprintf(b, sizeof b, "\\u%04x", c), o += b;
+        else o += char(c);
+    }
+    return o + "\"";
+}
+
 std::string json_num(double v) {
     if (std::isinf(v)) return "null";
     char b[64];
@@ -75,12 +87,19 @@ std::string render_stats_json(const RenderOptions& ra, const render::Scene& sc, 
     const auto& hc = res.results.front().run.counters;
     const render::Frame& frame = res.frame;
     std::ostringstream j;
-    j << "{\n  \"scene\": \"" << sc.name << "\",\n  \"size\": " << ra.size << ",\n  \"model\": \""
+    j << "{\n  \"scene\": " << json_str(sc.name) << ",\n  \"size\": " << ra.size << ",\n  \"model\": \""
       << render::model_name(ra.model) << "\",\n  \"mode\": \"" << mode_name(ra.mode) << "\",\n  \"rgb\": \""
       << (ra.rgb == render::RgbMode::once ? "once" : "per-channel") << "\",\n  \"host_gamma\": \""
       << (ra.gamma == host::GammaRule::patent ? "patent" : "midpoint") << "\",\n";
     j << "  \"triangles\": " << frame.triangles << ",\n  \"spans\": " << frame.spans.size()
       << ",\n  \"hidden_spans\": " << frame.hidden_spans << ",\n";
+    if (sc.obj.loaded) {
+        const render::ObjStats& o = sc.obj;
+        j << "  \"obj\": {\"faces\": " << o.faces << ", \"polygons\": " << o.polygons << ", \"triangles\": "
+          << o.triangles << ", \"degenerate\": " << o.degenerate << ", \"normals_computed\": "
+          << o.normals_computed() << ", \"normals_missing\": " << o.normals_missing << ", \"normals_zero\": "
+          << o.normals_zero << ", \"normals_not_finite\": " << o.normals_not_finite << "},\n";
+    }
     j << "  \"host\": {\"spans\": " << hc.spans << ", \"flat\": " << hc.flat << ", \"opposite_normals\": "
       << hc.opposite << ", \"no_highlight\": " << hc.no_highlight << ", \"c_saturated\": " << hc.c_saturated
       << ", \"single_pixel\": " << hc.single_pixel << ", \"gamma_fallback\": " << hc.gamma_fallback << "},\n";

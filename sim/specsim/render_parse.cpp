@@ -11,7 +11,8 @@ namespace spec {
 const char* const kRenderUsage =
     "  render   a scene rendered by scanline spans, the specular term from the chosen model; PNG output\n"
     "           --scene NAME   default | sphere | torus | teapot (default: default)\n"
-    "           --obj FILE     a triangulated OBJ file instead (normals from 'vn', else averaged)\n"
+    "           --obj FILE     an OBJ file instead: polygons triangulated, smooth normals where 'vn' is missing,\n"
+    "                          zero or not finite; scaled into the unit sphere at the origin and framed\n"
     "           --size N       image N x N pixels, 16..4096 (default 512)\n"
     "           --model M      rtl (Verilated spec_unit, default) | golden (bit-exact model) |\n"
     "                          ref (double, exact Blinn-Phong for the interpolated vectors) |\n"
@@ -32,7 +33,9 @@ const char* const kRenderUsage =
     "                     --ambient R,G,B\n"
     "           material (every object; an OBJ gets these): --n N (0..1023)  --ks K  --kd K  --ka K\n"
     "                     --color R,G,B  --spec-color R,G,B   (coefficients and channels in [0, 1])\n"
-    "           camera:   --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z  --fov DEGREES (vertical)\n"
+    "           camera:   --view X,Y,Z (direction from the target toward the eye: turns the camera about\n"
+    "                     the model; default for an OBJ 0,0.35,1)  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z\n"
+    "                     --fov DEGREES (vertical)\n"
     "  render-bench  speed of the render: host spans/s, golden and rtl pixels/s (medians, ratios)\n"
     "           --size N (default 256)  --runs R (3..15, default 5)  --scene NAME\n"
     "  plots    the patent's Fig. 5 and Fig. 9 redrawn (gnuplot): --out-dir DIR (fig5.png, fig9.png, .dat)\n"
@@ -104,6 +107,7 @@ RenderOptions parse_render(int argc, char** argv) {
         else if (f == "--target") { r.target = parse_vec3(f, a.value(f)); r.has_target = true; }
         else if (f == "--up") { r.up = parse_vec3(f, a.value(f)); r.has_up = true; }
         else if (f == "--fov") { r.fov = parse_double(f, a.value(f)); r.has_fov = true; }
+        else if (f == "--view") { r.view = parse_vec3(f, a.value(f)); r.has_view = true; }
         else throw UsageError("render: unknown option " + f);
     }
     if (have_scene && !r.obj.empty()) throw UsageError("render: --scene and --obj exclude each other");
@@ -122,7 +126,9 @@ render::Scene build_scene(const RenderOptions& r) {
         if (r.has_spec_color) x.spec_color = r.spec_color;
     };
     apply(m);
-    render::Scene s = r.obj.empty() ? render::make_scene(r.scene) : render::scene_from_obj(r.obj, m);
+    render::Scene s = r.obj.empty() ? render::make_scene(r.scene)
+                                    : render::scene_from_obj(r.obj, m, r.has_view ? r.view : render::default_view(),
+                                                             r.has_fov ? r.fov : 40.0);
     if (r.obj.empty()) {
         for (auto& o : s.objects) apply(o.mat);
     }
@@ -134,6 +140,7 @@ render::Scene build_scene(const RenderOptions& r) {
     if (r.has_target) s.camera.target = r.target;
     if (r.has_up) s.camera.up = r.up;
     if (r.has_fov) s.camera.fov_deg = r.fov;
+    if (r.has_view && r.obj.empty()) render::set_view(s.camera, r.view);   // an OBJ is framed from the view already
     s.validate();
     return s;
 }

@@ -53,6 +53,15 @@ void print_summary(const RenderOptions& ra, const render::Scene& sc, const Rende
     std::printf("render: %s, %dx%d, %zu object(s), %llu triangles, %zu spans (%llu hidden spans not sent)\n",
                 sc.name.c_str(), ra.size, ra.size, sc.objects.size(), (unsigned long long)frame.triangles,
                 frame.spans.size(), (unsigned long long)frame.hidden_spans);
+    if (sc.obj.loaded) {
+        const render::ObjStats& o = sc.obj;
+        std::printf("obj: %llu faces (%llu polygons triangulated), %llu triangles, %llu of no area left out; "
+                    "normals computed for %llu vertices (%llu without vn, %llu zero-length, %llu not finite)\n",
+                    (unsigned long long)o.faces, (unsigned long long)o.polygons, (unsigned long long)o.triangles,
+                    (unsigned long long)o.degenerate, (unsigned long long)o.normals_computed(),
+                    (unsigned long long)o.normals_missing, (unsigned long long)o.normals_zero,
+                    (unsigned long long)o.normals_not_finite);
+    }
     if (res.culled) {
         const methods::CullResult& c = res.cull;
         std::printf("cull-specular: %llu of %llu triangles, %llu of %llu spans, %llu of %llu core pixels skipped\n",
