@@ -25,6 +25,8 @@
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
+#   make test-mutants  each strengthened test against a deliberately broken copy of the tree: it must fail
+#               (tests/mutants.py, build-mutants; about 20 minutes on 2 cores the first time)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -33,7 +35,7 @@ RTL_TOPS := $(basename $(notdir $(RTL)))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
         bench-render synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
-        test-asan fuzz deps-fuzz compare tables methods
+        test-asan test-mutants fuzz deps-fuzz compare tables methods
 
 all: build
 
@@ -91,7 +93,7 @@ fig8: build
 	$(BUILD)/specsim fig8
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz
+	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz $(BUILD)-mutants
 
 # Regenerate the documents made from simulation (checked by the ctest docs_timing_matches_simulation)
 docs: build
@@ -200,6 +202,10 @@ test-asan: deps
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    ctest -j$(JOBS) --output-on-failure
 	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
+
+# The strengthened tests fail on broken copies: one mutant each (tests/mutants.py, docs/verification.md)
+test-mutants: deps
+	python3 tests/mutants.py --src . --work $(BUILD)-mutants --jobs $(JOBS)
 
 deps-fuzz:
 	@scripts/deps.sh clang libclang-rt-14-dev
