@@ -204,6 +204,7 @@ TEST(TunedModel, WithinBoundForEveryN) {
         }
     }
     RecordProperty("worst_error_over_bound", std::to_string(worst_ratio));
+    RecordProperty("worst_fixed_point_over_slack", std::to_string(worst.fixed_over_slack));
     RecordProperty("worst_n", std::to_string(worst_n));
     // measured: 0.842 and 0.390 (n = 16); asserted with the margins of tests/common.h
     EXPECT_LE(worst.error_over_bound, 0.89);
@@ -258,6 +259,7 @@ TEST(TunedUnit, EqualsModelAndMeetsBoundForEveryN) {
     EXPECT_GT(inside, 10000u);
     EXPECT_GT(outside, 10000u);
     RecordProperty("worst_error_over_bound", std::to_string(worst.error_over_bound));
+    RecordProperty("worst_fixed_point_over_slack", std::to_string(worst.fixed_over_slack));
     // measured: 0.715 and 0.371 (n = 10); asserted with the margins of tests/common.h
     EXPECT_LE(worst.error_over_bound, 0.76);
     EXPECT_LE(worst.fixed_over_slack, 0.46) << "fixed-point error grew (worst at n = " << worst.fixed_n << ")";
