@@ -31,8 +31,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
           "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
 
-LEAVES = ["spec_reg", "spec_counter", "spec_accum", "spec_rom", "spec_rom9", "spec_decoder", "spec_mul11",
-          "spec_rom12", "spec_interp", "spec_mul13", "spec_delay", "spec_datapath", "spec_saccum", "spec_ctrl"]
+def core_files(rtl_dir):
+    """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
+    with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
+        return [os.path.join(rtl_dir, line.strip()) for line in f if line.strip()]
 
 JOBS = {
     "spec_unit": dict(
@@ -95,7 +97,7 @@ def tail(path, n=15):
 
 
 def build_model(job, name, work, yosys, rtl_dir):
-    rtl = [os.path.join(rtl_dir, m + ".v") for m in LEAVES + [job["core"]]]
+    rtl = core_files(rtl_dir)
     script = [
         "read_verilog -defer -I rom " + " ".join(rtl),
         "hierarchy -top " + job["core"],

@@ -224,8 +224,9 @@ def main():
     caught = sum(1 for _, v in results if v == "caught")
     log("\n| mutant | file | test | result |\n|---|---|---|---|")
     for m, v in results:
-        log("| %s | %s | %s | %s |" % (m["name"], m["file"], m["cmd"][-1].replace("--gtest_filter=", ""),
-                                     v.split("\n")[0]))
+        test = m["cmd"][-1].replace("--gtest_filter=", "") if "spec_tests" in m["cmd"][0] else \
+            os.path.basename(m["cmd"][0]) + " (the corpus)"
+        log("| %s | `%s` | %s | %s |" % (m["name"], m["file"], test, v.split("\n")[0]))
     log("\nmutants: %d of %d caught by their strengthened test (%.0f s)" % (caught, len(results), time.time() - t0))
     return 0 if caught == len(mutants) else 1
 

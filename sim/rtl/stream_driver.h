@@ -12,45 +12,46 @@
 #include "harness.h"
 #include "span_core.h"
 #include "spec_model.h"
+#include "spec_params.h"
+#include "verilated.h"
 
 namespace spec {
 
-// The descriptor layout of spec_stream (rtl/spec_stream.v): field offsets in the DESC_W-bit word.
-struct DescLayout {
-    int c = 0, n = 16, len = 32, zeta0 = 64, dzeta = 96;
-    int desc_w = 128;
-};
+// The descriptor layout of spec_stream (rtl/spec_stream.v) as the generator writes it (rom/spec_params.h),
+// DESC_W bits as 32-bit words (the Verilated s_axis_tdata).
+constexpr int kDescWords = spec_params::DESC_W / 32;
+static_assert(spec_params::DESC_W % 32 == 0, "the descriptor is a whole number of 32-bit words");
 
-// Writes `width` bits of v at bit `off` of the little-endian word array w.
-inline void put_bits(uint32_t* w, int off, int width, uint64_t v) {
+// Puts the low `width` bits of v into w at bit lsb.
+inline void put_field(uint32_t* w, int lsb, int width, uint64_t v) {
     for (int b = 0; b < width; ++b) {
-        const int at = off + b;
-        const uint32_t bit = uint32_t(1) << (at % 32);
-        if ((v >> b) & 1) w[at / 32] |= bit;
-        else w[at / 32] &= ~bit;
+        const int bit = lsb + b;
+        const uint32_t m = 1u << (bit % 32);
+        if ((v >> b) & 1u) w[bit / 32] |= m;
+        else w[bit / 32] &= ~m;
     }
 }
 
-// The descriptor of span r, DESC_W / 32 words (128 bits: four), fields at the layout's offsets, every other
-// bit 0.
-inline void pack_descriptor(const SpanRegs& r, uint32_t w[4], const Format& f = Format(),
-                            const DescLayout& d = DescLayout()) {
-    for (int i = 0; i < d.desc_w / 32; ++i) w[i] = 0;
-    put_bits(w, d.c, f.c_w, r.c);
-    put_bits(w, d.n, f.n_w, r.n);
-    put_bits(w, d.len, f.l_w, r.len);
-    put_bits(w, d.zeta0, f.ang_w, static_cast<uint64_t>(r.zeta0));
-    put_bits(w, d.dzeta, f.ang_w, static_cast<uint64_t>(r.dzeta));
+inline void pack_descriptor(const SpanRegs& r, uint32_t w[kDescWords]) {
+    for (int i = 0; i < kDescWords; ++i) w[i] = 0;
+    using namespace spec_params;
+    put_field(w, DESC_C_LSB, C_W, r.c);
+    put_field(w, DESC_N_LSB, N_W, r.n);
+    put_field(w, DESC_L_LSB, L_W, r.len);
+    put_field(w, DESC_ZETA0_LSB, ANG_W, static_cast<uint64_t>(r.zeta0));
+    put_field(w, DESC_DZETA_LSB, ANG_W, static_cast<uint64_t>(r.dzeta));
 }
 
-// The bits of the descriptor that belong to no field (the core must ignore them), as a mask of four words.
-inline void ignored_bits(uint32_t w[4], const Format& f = Format(), const DescLayout& d = DescLayout()) {
-    for (int i = 0; i < d.desc_w / 32; ++i) w[i] = ~uint32_t(0);
-    put_bits(w, d.c, f.c_w, 0);
-    put_bits(w, d.n, f.n_w, 0);
-    put_bits(w, d.len, f.l_w, 0);
-    put_bits(w, d.zeta0, f.ang_w, 0);
-    put_bits(w, d.dzeta, f.ang_w, 0);
+// The descriptor's bits outside its fields (which the core ignores), as a mask per word.
+inline void ignored_mask(uint32_t w[kDescWords]) {
+    SpanRegs ones;
+    ones.c = ~0u;
+    ones.n = ~0u;
+    ones.len = ~0u;
+    ones.zeta0 = -1;
+    ones.dzeta = -1;
+    pack_descriptor(ones, w);
+    for (int i = 0; i < kDescWords; ++i) w[i] = ~w[i];
 }
 
 struct StreamPixel {
@@ -77,8 +78,7 @@ public:
     // more than the core's latency from an accepted descriptor to its first pixel (20, 22 with INTERP = 1).
     static constexpr int kDrainCycles = 64;
 
-    explicit StreamDriver(const Format& f = Format())
-        : fmt_(f), h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
+    StreamDriver() : h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
         idle();
         h_->eval();
         reset();
@@ -122,14 +122,14 @@ public:
             if (!offering && next < spans.size() && offer(rng)) offering = true;
             t.s_axis_tvalid = offering;
             if (offering) {
-                uint32_t w[4];
-                pack_descriptor(spans[next], w, fmt_);
+                uint32_t w[kDescWords];
+                pack_descriptor(spans[next], w);
                 if (ignored_ones_) {  // the bits between the fields, which the core must ignore
-                    uint32_t m[4];
-                    ignored_bits(m, fmt_);
-                    for (int i = 0; i < 4; ++i) w[i] |= m[i];
+                    uint32_t m[kDescWords];
+                    ignored_mask(m);
+                    for (int i = 0; i < kDescWords; ++i) w[i] |= m[i];
                 }
-                for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+                for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
             }
             t.m_axis_tready = all_out ? 1 : ready(rng);
             t.eval();
@@ -167,9 +167,8 @@ private:
         V& t = h_.top();
         t.s_axis_tvalid = 0;
         t.m_axis_tready = 1;
-        for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = 0;
+        for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = 0;
     }
-    Format fmt_;
     Harness<V> h_;
     bool ignored_ones_ = false;
 };
@@ -178,7 +177,7 @@ private:
 template <class V>
 class StreamCore : public SpanCore {
 public:
-    explicit StreamCore(const Format& f = Format()) : d_(f), rng_(1) {}
+    StreamCore() : rng_(1) {}
     std::vector<uint32_t> span(const SpanRegs& r) override {
         std::vector<uint32_t> px;
         for (const StreamPixel& p : d_.run({r}, Stalls{}, rng_)) px.push_back(p.value);

@@ -103,8 +103,8 @@ std::vector<uint32_t> span_pixels(const SpanOptions& s) {
     if (s.model == "golden") {
         core.reset(new ModelCore(m));
     } else if (s.model == "stream") {
-        if (s.mode == Mode::tuned) core.reset(new StreamCore<Vspec_stream_tuned>(fmt));
-        else core.reset(new StreamCore<Vspec_stream>(fmt));
+        if (s.mode == Mode::tuned) core.reset(new StreamCore<Vspec_stream_tuned>());
+        else core.reset(new StreamCore<Vspec_stream>());
     } else if (s.model == "rtl") {
         try {
             core = make_unit_driver(s.mode, s.vcd);

@@ -23,9 +23,9 @@ StreamTrace stream_trace() {
     for (int c = 0; c < 32; ++c) {
         t.s_axis_tvalid = next < tr.spans.size();
         if (next < tr.spans.size()) {
-            uint32_t w[4];
+            uint32_t w[kDescWords];
             pack_descriptor(tr.spans[next], w);
-            for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+            for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
         }
         t.m_axis_tready = !(c == 24 || c == 25);  // the sink stalls for two cycles
         t.eval();
