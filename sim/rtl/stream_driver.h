@@ -173,7 +173,8 @@ private:
     bool ignored_ones_ = false;
 };
 
-// spec_stream as a SpanCore: one span at a time, no stalls (specsim span --model stream).
+// spec_stream as a SpanCore: one span at a time, no stalls (specsim span --model stream, the renderer's tests).
+// cycle() counts every clock simulated, the drain after each span (kDrainCycles) included.
 template <class V>
 class StreamCore : public SpanCore {
 public:
