@@ -103,13 +103,15 @@ fig8: build
 clean:
 	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz
 
-# Regenerate the documents made from simulation (checked by the ctest docs_timing_matches_simulation)
+# Regenerate the documents made from simulation and every number marked in README.md and docs/*.md
+# (scripts/docgen.py; the ctests docs_current and docs_*timing_matches_simulation check them)
 docs: build
 	$(BUILD)/specsim demo --diagram docs/fig11-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/interface.md docs/fig11-timing.txt
 	python3 scripts/embed_diagram.py README.md docs/fig11-timing.txt waves
 	$(BUILD)/specsim stream-diagram --out docs/stream-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/stream.md docs/stream-timing.txt
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 accuracy: build
 	$(BUILD)/specsim accuracy
@@ -154,6 +156,8 @@ bench-render: build
 bench-stream: build
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/specsim bench-stream --runs 5 --json $(BUILD)/bench/stream.json
+	@mkdir -p docs/data && cp $(BUILD)/bench/stream.json docs/data/bench_stream.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench: bench-render bench-stream
 

@@ -40,7 +40,7 @@ JOBS = {
     "spec_unit": dict(
         core="spec_unit", wrapper="fv_spec_unit",
         expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
-                "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs"],
+                "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs", "start_q", "len_q"],
         depth=2, bmc=40, cover=48),
     "spec_stream": dict(
         core="spec_stream", wrapper="fv_spec_stream",
@@ -60,10 +60,15 @@ JOBS = {
 # minutes, the failing ones 1-2 minutes each).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 24}
 MUTANTS = [
-    ("spec_unit", "spec_unit.v", ".load_n(len_load_n | busy_o)", ".load_n(len_load_n)",
+    ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
     ("spec_unit", "spec_unit.v", ".we(c_we & idle)", ".we(c_we)", "register 1 written while busy"),
-    ("spec_unit", "spec_unit.v", ".start(start & idle)", ".start(start)", "Start not ignored while busy"),
+    ("spec_unit", "spec_unit.v", "wire start_go = start & ~start_q & idle;", "wire start_go = start & ~start_q;",
+     "Start not ignored while busy"),
+    ("spec_unit", "spec_unit.v", "wire start_go = start & ~start_q & idle;", "wire start_go = start & idle;",
+     "Start as a level (the 211-pixel trap)"),
+    ("spec_unit", "spec_unit.v", ".load_n(~(len_we | start_go))", ".load_n(~len_we)",
+     "a Start without a load runs 2^L_W pixels (counter 5 not reloaded)"),
     ("spec_unit", "spec_unit.v", "assign busy_o = sig28 | fresh8 | dp_busy;", "assign busy_o = sig28 | fresh8;",
      "busy_o falls before the last pixel is out"),
     ("spec_unit", "spec_counter.v", "(q == {W{1'b0}})", "(q == {{(W - 1) {1'b0}}, 1'b1})",
