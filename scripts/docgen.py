@@ -98,6 +98,19 @@ class Facts:
             return {"rows": rows, "added": float(m.group(1)) if m else None, "text": out}
         return self.once("accuracy." + config, make)
 
+    def fig8_all(self):
+        """q(n) and a(n) in %, every n, from `specsim fig8 --all` (double precision, the Fig. 10 rule)."""
+        def make():
+            q, a = {}, {}
+            for m in re.finditer(r"^\s*(\d+)\s+(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s*$",
+                                 self.run([self.specsim, "fig8", "--all"]), re.M):
+                q[int(m.group(1))] = float(m.group(3))
+                a[int(m.group(1))] = float(m.group(4))
+            if len(q) < 1000:
+                raise DocError("specsim fig8 --all printed %d rows of q(n)" % len(q))
+            return q, a
+        return self.once("fig8_all", make)
+
     def data(self, name):
         def make():
             path = os.path.join(ROOT, "docs", "data", name + ".json")
@@ -123,6 +136,8 @@ class Facts:
             if parts[1] == "added":
                 return acc["added"]
             raise DocError("unknown fact %s" % key)
+        if head in ("q", "a"):   # q(n), a(n) in %
+            return self.fig8_all()[0 if head == "q" else 1][int(parts[1])]
         if head == "calc":   # small derived values
             return CALC[parts[1]](self)
         raise DocError("unknown fact %s" % key)
@@ -139,7 +154,17 @@ def walk(obj, parts, key):
     return obj
 
 
+def q_below_from(f, limit):
+    """The smallest n0 with q(n) <= limit for every n0 <= n <= 1000."""
+    q = f.fig8_all()[0]
+    n0 = 1000
+    while n0 > 1 and q[n0 - 1] <= limit:
+        n0 -= 1
+    return n0
+
+
 CALC = {
+    "q06_from": lambda f: q_below_from(f, 0.6),
     # pixel i of spec_unit, cycles after Start: FIRST + 2i; busy_o from t+1 to t+FIRST+2l
     "unit_busy_end_plus1": lambda f: f.header("default")["UNIT_FIRST_PIXEL"] + 1,
 }
@@ -188,7 +213,7 @@ def block_fig8(f):
     cols = []
     for k, c, p in comp:
         c = c if c.split("..")[0] != c.split("..")[-1] else c.split("..")[0]
-        if cols and cols[-1][1] == c and cols[-1][2] == p and cols[-1][0][1] == k - 1 and k not in (9, 15, 16):
+        if cols and cols[-1][1] == c and cols[-1][2] == p and cols[-1][0][1] == k - 1:
             cols[-1] = ((cols[-1][0][0], k), c, p)
         else:
             cols.append(((k, k), c, p))
