@@ -189,19 +189,20 @@ deps-formal:
 
 formal: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal
+	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal --data docs/data/formal.json
 
 # The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
 formal-mutants: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants
+	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
 	$(call cmake_build,$(BUILD)-cov,--target spec_tests specsim)
 	rm -rf $(BUILD)-cov/coverage $(BUILD)-cov/annotated
 	cd $(BUILD)-cov && SPEC_COVERAGE_DIR=coverage ./spec_tests --gtest_brief=1
-	python3 scripts/coverage.py --goal 95 --uncovered --annotate $(BUILD)-cov/annotated $(BUILD)-cov/coverage
+	python3 scripts/coverage.py --goal 100 --uncovered --annotate $(BUILD)-cov/annotated --json docs/data/coverage.json \
+	    $(BUILD)-cov/coverage
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
