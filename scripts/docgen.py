@@ -346,7 +346,51 @@ def block_tables_excerpt(f):
     return "\n".join(out)
 
 
+def block_formal_steps(f):
+    d = f.data("formal")
+    out = ["| job | step | result | time (s) |", "|---|---|---|---|"]
+    for r in d["steps"]:
+        what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
+        out.append("| %s | %s | %s | %.0f |" % (r["job"], what, "pass" if r["pass"] else "FAIL", r["seconds"]))
+    out.append("")
+    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (d["date"], d.get("solver")))
+    return "\n".join(out)
+
+
+def block_formal_mutants(f):
+    d = f.data("formal_mutants")
+    out = ["| job | the bug (`formal/formal.py` MUTANTS) | caught by |", "|---|---|---|"]
+    for m in d["mutants"]:
+        if m["expected"]:
+            res = "`%s`" % m["assertion"] if m.get("assertion") else "caught"
+        else:
+            res = "not caught, as it must not be (an equivalent change)"
+        out.append("| %s | %s | %s |" % (m["job"], m["bug"], res))
+    out.append("")
+    out.append("(`make formal-mutants` on %s: bounded checks of %s cycles.)" % (
+        d["date"], ", ".join("%s %d" % kv for kv in sorted(d["bmc_cycles"].items()))))
+    return "\n".join(out)
+
+
+def block_coverage(f):
+    d = f.data("coverage")
+
+    def cell(hit_tot):
+        hit, tot = hit_tot
+        return "%.1f %% (%d/%d)" % (100.0 * hit / tot, hit, tot) if tot else "no statements"
+    out = ["| RTL file | line coverage | toggle coverage |", "|---|---|---|"]
+    for name, v in sorted(d["files"].items()):
+        out.append("| `%s` | %s | %s |" % (name, cell(v["line"]), cell(v["toggle"]) if v["toggle"][1] else "-"))
+    out.append("| all | %s | %s |" % (cell(d["all"]["line"]), cell(d["all"]["toggle"])))
+    out.append("")
+    out.append("(`make coverage` on %s.)" % d["date"])
+    return "\n".join(out)
+
+
 BLOCKS = {
+    "formal-steps": block_formal_steps,
+    "formal-mutants": block_formal_mutants,
+    "coverage": block_coverage,
     "compare-rel": block_compare_rel,
     "tables-excerpt": block_tables_excerpt,
     "render-stats": block_render_stats,
