@@ -20,8 +20,8 @@
 #include "fileutil.h"
 #include "highlight.h"
 #include "image.h"
+#include "methods_usage.h"
 #include "normalize.h"
-#include "parallax.h"
 #include "raster.h"
 #include "scene.h"
 #include "shade.h"
@@ -40,12 +40,7 @@ const char* const kMethodsUsage =
     "           (relative errors, (0, 0.5), default 0.01)  --extend paper|slerp (how a span is extended to\n"
     "           2^k intervals; default paper)  --scene NAME (repeatable; default: the four built-in\n"
     "           scenes and sphere-lo, torus-lo, teapot-lo of 300-1500 triangles)  --out-dir DIR (fig2.png,\n"
-    "           fig3.png, panel_SCENE.png)\n"
-    "  parallax   companion paper C: iterative parallax mapping against Kaneko, Welsh and the exact intersection\n"
-    "           --map NAME (repeatable; waves, bumps, bricks, rocks; default all)  --map-size N (power of two,\n"
-    "           16..2048, default 256)  --depth S (relief depth in texture units, (0, 0.5], default 0.05)\n"
-    "           --threshold T (texture units, default depth / 512)  --max-iter K (1..1000, default 16)\n"
-    "           --grid G (fragments G x G per view, 2..256, default 24)  --out-dir DIR (parallax_MAP.png)\n";
+    "           fig3.png, panel_SCENE.png)\n" SPEC_PARALLAX_USAGE;
 
 namespace {
 using methods::Vec;
@@ -629,232 +624,9 @@ int cmd_normalize_impl(int argc, char** argv) {
     return 0;
 }
 
-// ---------------------------------------------------------------------------------------------------------
-// parallax
-// ---------------------------------------------------------------------------------------------------------
-
-struct ErrStats {
-    std::vector<double> e;
-    void add(double x) { e.push_back(x); }
-    double mean() const {
-        double s = 0;
-        for (double x : e) s += x;
-        return e.empty() ? 0 : s / double(e.size());
-    }
-    double quantile(double q) {
-        if (e.empty()) return 0;
-        std::sort(e.begin(), e.end());
-        return e[std::min(e.size() - 1, size_t(q * double(e.size())))];
-    }
-};
-
-// texture-coordinate distance in texels
-double texels(const methods::HeightMap& m, double u, double v, const methods::Hit& ref) {
-    return std::hypot(u - ref.u, v - ref.v) * m.size;
-}
-
-render::Image error_ramp(const std::vector<double>& err, int w, int h) {
-    render::Image img(w, h, 12, 14, 20);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const double e = err[size_t(y) * size_t(w) + size_t(x)];
-            if (e < 0) continue;
-            // 0 black, 1 texel red, 4 yellow, 16 and more white (log2 scale)
-            const double t = std::min(1.0, std::max(0.0, std::log2(1.0 + e) / std::log2(17.0)));
-            uint8_t* p = img.at(x, y);
-            p[0] = uint8_t(std::lround(255 * std::min(1.0, 3 * t)));
-            p[1] = uint8_t(std::lround(255 * std::min(1.0, std::max(0.0, 3 * t - 1))));
-            p[2] = uint8_t(std::lround(255 * std::min(1.0, std::max(0.0, 3 * t - 2))));
-        }
-    }
-    return img;
-}
-
-int cmd_parallax_impl(int argc, char** argv) {
-    std::vector<std::string> maps;
-    int map_size = 256, max_iter = 16, grid = 24;
-    double depth = 0.05, threshold = -1;
-    std::string out_dir;
-    Args a(argc, argv, 2);
-    while (!a.done()) {
-        const std::string f = a.flag();
-        if (f == "--map") maps.push_back(a.value(f));
-        else if (f == "--map-size") {
-            map_size = int(parse_int(f, a.value(f), 16, 2048));
-            if (map_size & (map_size - 1)) throw UsageError("--map-size: must be a power of two");
-        } else if (f == "--depth") {
-            depth = parse_double(f, a.value(f));
-            if (!(depth > 0 && depth <= 0.5)) throw UsageError("--depth: must be in (0, 0.5]");
-        } else if (f == "--threshold") {
-            threshold = parse_double(f, a.value(f));
-            if (!(threshold > 0 && threshold < 1)) throw UsageError("--threshold: must be in (0, 1)");
-        } else if (f == "--max-iter") max_iter = int(parse_int(f, a.value(f), 1, 1000));
-        else if (f == "--grid") grid = int(parse_int(f, a.value(f), 2, 256));
-        else if (f == "--out-dir") out_dir = a.value(f);
-        else throw UsageError("parallax: unknown option " + f);
-    }
-    maps = split_names(maps, methods::heightmap_names());
-    std::vector<methods::HeightMap> hm;
-    for (const auto& n : maps) {
-        try {
-            hm.push_back(methods::make_heightmap(n, map_size));
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("--map: ") + e.what());
-        }
-    }
-    if (threshold < 0) threshold = depth / 512;
-    if (!out_dir.empty()) make_dir(out_dir);
-    const double elevations[] = {80, 60, 45, 30, 20, 10};
-    const int azimuths = 8;
-    const methods::StepFormat fmt;
-    std::printf("Companion paper C (seeds/002): iterative parallax mapping. Height maps %dx%d (bilinear, repeating),\n"
-                "relief depth s = %g texture units (%.1f texels), threshold |d| <= %.3g, at most %d iterations; per\n"
-                "elevation %d azimuths x %dx%d fragments. Errors: |(u', v') - exact| in texels; the exact intersection\n"
-                "is the one nearest the viewer. 'other': converged (|d| <= threshold) more than a texel away from it\n"
-                "(another intersection); 'cap': not converged; 'f' outside (0, 2)': the exact intersection's slope\n"
-                "f'(t*) = Vh - s grad(h).V(u, v) where the iteration cannot converge (docs/methods.md). Fixed point:\n"
-                "rtl/parallax_step.v's arithmetic (bit-exact model), 8-bit heights, nearest texel.\n\n",
-                map_size, map_size, depth, depth * map_size, threshold, max_iter, azimuths, grid, grid);
-    for (const auto& m : hm) {
-        const methods::FixedParallax fp = methods::make_fixed(m, depth, fmt);
-        std::printf("%s (largest slope |grad h| s = %.2f):\n\n", m.name.c_str(), m.lipschitz * depth);
-        std::printf("| elevation | Kaneko mean / p95 | Welsh mean / p95 | paper: mean / p95 / max | iterations mean | "
-                    "converged | other | cap | f' outside (0, 2) | fixed point mean / p95 |\n"
-                    "|---|---|---|---|---|---|---|---|---|---|\n");
-        for (double el : elevations) {
-            ErrStats ek, ew, ei, ef;
-            double iters = 0;
-            uint64_t n = 0, conv = 0, other = 0, cap = 0, bad_slope = 0;
-            for (int az = 0; az < azimuths; ++az) {
-                const methods::View V = methods::view_from_angles(el, 360.0 * az / azimuths + 10.0);
-                const int64_t vu = std::llround(std::ldexp(V.u, fmt.v_f)), vv = std::llround(std::ldexp(V.v, fmt.v_f)),
-                              vh = std::llround(std::ldexp(V.h, fmt.v_f));
-                for (int gy = 0; gy < grid; ++gy) {
-                    for (int gx = 0; gx < grid; ++gx) {
-                        const double u0 = (gx + 0.37) / grid, v0 = (gy + 0.61) / grid;
-                        const methods::Hit ex = methods::exact(m, depth, u0, v0, V);
-                        const methods::Hit k = methods::kaneko(m, depth, u0, v0, V);
-                        const methods::Hit w = methods::welsh(m, depth, u0, v0, V);
-                        const methods::Hit it = methods::iterative(m, depth, u0, v0, V, threshold, max_iter);
-                        const double e_it = texels(m, it.u, it.v, ex);
-                        ek.add(texels(m, k.u, k.v, ex));
-                        ew.add(texels(m, w.u, w.v, ex));
-                        ei.add(e_it);
-                        iters += it.iterations;
-                        ++n;
-                        if (it.converged) {
-                            if (e_it <= 1.0) ++conv;
-                            else ++other;
-                        } else {
-                            ++cap;
-                        }
-                        double gu, gv;
-                        m.gradient(ex.u, ex.v, &gu, &gv);
-                        const double fp_slope = V.h - depth * (gu * V.u + gv * V.v);
-                        if (!(fp_slope > 0 && fp_slope < 2)) ++bad_slope;
-                        const methods::FixedHit fh = methods::iterative_fixed(
-                            fp, std::llround(std::ldexp(u0, fmt.f)), std::llround(std::ldexp(v0, fmt.f)), vu, vv, vh,
-                            std::llround(std::ldexp(threshold, fmt.f)), max_iter);
-                        ef.add(texels(m, std::ldexp(double(fh.u), -fmt.f), std::ldexp(double(fh.v), -fmt.f), ex));
-                    }
-                }
-            }
-            const double me = ei.mean();
-            const double p95 = ei.quantile(0.95), mx = ei.quantile(1.0);
-            std::printf("| %g deg | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f / %.1f | %.1f | %.1f %% | %.1f %% | %.1f %% "
-                        "| %.1f %% | %.2f / %.2f |\n",
-                        el, ek.mean(), ek.quantile(0.95), ew.mean(), ew.quantile(0.95), me, p95, mx,
-                        iters / double(n), pct(double(conv), double(n)), pct(double(other), double(n)),
-                        pct(double(cap), double(n)), pct(double(bad_slope), double(n)), ef.mean(), ef.quantile(0.95));
-        }
-        std::printf("\n");
-    }
-    std::printf("Error against the height fetches spent (all maps, elevations 30 and 15 deg, same fragments): the paper's\n"
-                "iteration with a cap of F steps (F = 1 is Welsh), and a linear search of F - 4 steps plus 4 bisections\n"
-                "(relief mapping / parallax occlusion mapping). Within 1 texel: the share of fragments whose result is\n"
-                "at most a texel from the exact intersection:\n\n"
-                "| fetches F | paper 30 deg: mean / p95 | within 1 texel | paper 15 deg: mean / p95 | within 1 texel | "
-                "search 30 deg: mean / p95 | within 1 texel | search 15 deg: mean / p95 | within 1 texel |\n"
-                "|---|---|---|---|---|---|---|---|---|\n");
-    // mean / p95 / share within a texel over every map, azimuth and fragment at one elevation
-    auto pooled = [&](double el, auto method) {
-        ErrStats e;
-        uint64_t n = 0, good = 0;
-        for (const auto& m : hm) {
-            for (int az = 0; az < azimuths; ++az) {
-                const methods::View V = methods::view_from_angles(el, 360.0 * az / azimuths + 10.0);
-                for (int gy = 0; gy < grid; ++gy) {
-                    for (int gx = 0; gx < grid; ++gx) {
-                        const double u0 = (gx + 0.37) / grid, v0 = (gy + 0.61) / grid;
-                        const methods::Hit ex = methods::exact(m, depth, u0, v0, V);
-                        const methods::Hit it = method(m, u0, v0, V);
-                        const double err = texels(m, it.u, it.v, ex);
-                        e.add(err);
-                        ++n;
-                        good += err <= 1.0;
-                    }
-                }
-            }
-        }
-        std::printf(" %.2f / %.2f | %.1f %% |", e.mean(), e.quantile(0.95), pct(double(good), double(n)));
-    };
-    std::printf("| Kaneko (1 + a division) |");
-    for (double el : {30.0, 15.0}) {
-        pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
-            return methods::kaneko(m, depth, u0, v0, V);
-        });
-    }
-    std::printf(" - | - | - | - |\n");
-    for (int cap : {1, 2, 4, 8, 16, 32, 64, 256}) {
-        std::printf("| %d |", cap);
-        for (double el : {30.0, 15.0}) {
-            pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
-                return methods::iterative(m, depth, u0, v0, V, threshold, cap);
-            });
-        }
-        for (double el : {30.0, 15.0}) {
-            if (cap < 8) {
-                std::printf(" - | - |");
-                continue;
-            }
-            pooled(el, [&](const methods::HeightMap& m, double u0, double v0, const methods::View& V) {
-                return methods::linear_search(m, depth, u0, v0, V, cap - 4, 4);
-            });
-        }
-        std::printf("\n");
-    }
-    if (!out_dir.empty()) {
-        for (const auto& m : hm) {
-            methods::QuadView q;
-            q.s = depth;
-            q.threshold = threshold;
-            q.max_iter = max_iter;
-            std::vector<double> err;
-            const render::Image none = methods::render_quad(m, q, methods::ParallaxMethod::none);
-            const render::Image k = methods::render_quad(m, q, methods::ParallaxMethod::kaneko);
-            const render::Image w = methods::render_quad(m, q, methods::ParallaxMethod::welsh);
-            const render::Image it = methods::render_quad(m, q, methods::ParallaxMethod::iterative, &err);
-            const render::Image ex = methods::render_quad(m, q, methods::ParallaxMethod::exact);
-            const render::Image er = error_ramp(err, q.width, q.height);
-            const render::Image panel = render::make_panel(
-                {{&none, "normal mapping", "no offset"},
-                 {&k, "Kaneko", "h (Vu, Vv) / Vh"},
-                 {&w, "Welsh", "offset limiting"},
-                 {&it, "paper", "iterative, cap " + std::to_string(max_iter)},
-                 {&ex, "exact", "nearest intersection"},
-                 {&er, "paper's error", "1 / 4 / 16 texels"}},
-                "Companion paper C: parallax mapping, height map " + m.name + ", camera at " +
-                    std::to_string(int(q.elevation_deg)) + " deg");
-            render::write_png(out_dir + "/parallax_" + m.name + ".png", panel);
-        }
-        std::printf("\nimages: %s/parallax_MAP.png\n", out_dir.c_str());
-    }
-    return 0;
-}
 }  // namespace
 
 int cmd_highlight(int argc, char** argv) { return cmd_highlight_impl(argc, argv); }
 int cmd_normalize(int argc, char** argv) { return cmd_normalize_impl(argc, argv); }
-int cmd_parallax(int argc, char** argv) { return cmd_parallax_impl(argc, argv); }
 
 }  // namespace spec
