@@ -319,7 +319,7 @@ TEST(MethodsCli, SubcommandsPrintTheirTables) {
     const CliRun n = specsim("normalize --size 64 --runs 3 --scene sphere-lo");
     ASSERT_EQ(n.code, 0) << n.err;
     EXPECT_NE(n.out.find("| sphere-lo |"), std::string::npos) << n.out;
-    EXPECT_NE(n.out.find("| 16 deg |"), std::string::npos);
+    EXPECT_NE(n.out.find("| 16° |"), std::string::npos);
     const CliRun p = specsim("parallax --map waves --map-size 64 --grid 4 --max-iter 8 --budgets 1,8");
     ASSERT_EQ(p.code, 0) << p.err;
     EXPECT_NE(p.out.find("| waves | 30° |"), std::string::npos) << p.out;
