@@ -168,5 +168,32 @@ IterRunResult run_parallax_iter(IterBuild b, const std::vector<IterJob>& jobs, c
     }
 }
 
+std::vector<ThroughputCell> iter_throughput(const std::vector<IterJob>& jobs, const HeightFetch& fetch,
+                                            const std::vector<int>& latencies) {
+    const StepFormat fmt;
+    std::vector<ThroughputCell> out;
+    for (int lat : latencies) {
+        for (IterBuild b : {IterBuild::slots1, IterBuild::slots4, IterBuild::slots8}) {
+            IterRunConfig cfg;
+            cfg.latency_min = cfg.latency_max = lat;
+            const IterRunResult r = run_parallax_iter(b, jobs, fetch, cfg);
+            ThroughputCell c;
+            c.build = b;
+            c.latency = lat;
+            c.steps = r.steps;
+            c.cycles = r.cycles;
+            for (size_t k = 0; k < jobs.size(); ++k) {
+                const FixedHit m = iterate_fixed(fmt, jobs[k], fetch);
+                const FixedHit& h = r.hits[k];
+                c.mismatches += r.seen[k] != 1 || h.u != m.u || h.v != m.v || h.iterations != m.iterations ||
+                                h.converged != m.converged;
+            }
+            if (r.timed_out) c.mismatches = jobs.size();
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
 }  // namespace methods
 }  // namespace spec

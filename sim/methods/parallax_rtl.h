@@ -38,5 +38,16 @@ int iter_slots(IterBuild b);
 IterRunResult run_parallax_iter(IterBuild b, const std::vector<IterJob>& jobs, const HeightFetch& fetch,
                                 const IterRunConfig& cfg);
 
+// Throughput of the Verilated unit: the fragments of `jobs` through each build at each fixed memory latency
+// (in order, no stalls); steps per clock, and whether every result equals iterate_fixed's.
+struct ThroughputCell {
+    IterBuild build = IterBuild::slots4;
+    int latency = 1;
+    uint64_t steps = 0, cycles = 0;
+    uint64_t mismatches = 0;
+};
+std::vector<ThroughputCell> iter_throughput(const std::vector<IterJob>& jobs, const HeightFetch& fetch,
+                                            const std::vector<int>& latencies);
+
 }  // namespace methods
 }  // namespace spec

@@ -81,6 +81,19 @@ int cmd_parallax(int argc, char** argv) {
     report_parallax_iterations(rows, opt.cap, &doc);
     const methods::Sweep sw = methods::run_sweep(maps, opt.setup, {30, 15}, opt.budgets, methods::pm_compared());
     report_parallax_sweep(sw, &doc);
+    {
+        // rtl/parallax_iter.v: the fragments of the first map at 30 degrees from the slab's top, the cap and
+        // threshold above, through the Verilated unit
+        const methods::StepFormat fmt;
+        const methods::FixedParallax fp = methods::make_fixed(maps[0], s.depth, fmt);
+        std::vector<methods::IterJob> jobs;
+        for (const methods::Fragment& f : methods::fragments(maps[0], s, 30)) {
+            jobs.push_back(methods::job_for(fmt, s.depth, f.u0, f.v0, f.V.u, f.V.v, f.V.h, true,
+                                            uint64_t(methods::to_fixed(s.thr(), fmt.f)), uint32_t(opt.cap)));
+        }
+        const methods::HeightFetch fetch = [&](int64_t u, int64_t v) { return fp.lookup(u, v); };
+        report_parallax_rtl(methods::iter_throughput(jobs, fetch, {1, 2, 4, 8, 16}), jobs.size(), &doc);
+    }
     if (!opt.out_dir.empty()) {
         plot_parallax_sweep(sw, opt.out_dir);
         render_parallax_pictures(maps, opt);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "parallax_eval.h"
+#include "parallax_rtl.h"
 
 namespace spec {
 
@@ -26,6 +27,7 @@ class DocTables;
 }
 void report_parallax_iterations(const std::vector<methods::IterRow>& rows, int cap, methods_cli::DocTables* doc);
 void report_parallax_sweep(const methods::Sweep& sw, methods_cli::DocTables* doc);
+void report_parallax_rtl(const std::vector<methods::ThroughputCell>& cells, uint64_t fragments, methods_cli::DocTables* doc);
 void plot_parallax_sweep(const methods::Sweep& sw, const std::string& out_dir);
 void render_parallax_pictures(const std::vector<methods::HeightMap>& maps, const ParallaxOptions& opt);
 

@@ -133,6 +133,25 @@ void report_parallax_sweep(const methods::Sweep& sw, methods_cli::DocTables* doc
     }
 }
 
+void report_parallax_rtl(const std::vector<methods::ThroughputCell>& cells, uint64_t fragments, methods_cli::DocTables* doc) {
+    std::string t = "| memory latency (clocks) | SLOTS = 1 | SLOTS = 4 | SLOTS = 8 |\n|---|---|---|---|\n";
+    uint64_t bad = 0;
+    for (size_t k = 0; k < cells.size(); k += 3) {
+        t += strf("| %d |", cells[k].latency);
+        for (size_t j = k; j < k + 3 && j < cells.size(); ++j) {
+            t += strf(" %.3f |", double(cells[j].steps) / double(cells[j].cycles));
+            bad += cells[j].mismatches;
+        }
+        t += "\n";
+    }
+    std::printf("4. rtl/parallax_iter.v (Verilated), %llu fragments of the first map at 30 deg from the slab's top:\n"
+                "   steps per clock against the memory's latency and the number of fragments in flight (SLOTS);\n"
+                "   results differing from the model iterate_fixed: %llu\n\n%s\n",
+                (unsigned long long)fragments, (unsigned long long)bad, t.c_str());
+    doc->add("parallax-rtl", t + strf("\nResults differing from the bit-exact model: %llu of %llu per run.\n",
+                                      (unsigned long long)bad, (unsigned long long)fragments));
+}
+
 void plot_parallax_sweep(const methods::Sweep& sw, const std::string& out_dir) {
     std::string names;
     for (methods::Pm m : sw.methods) names += std::string(names.empty() ? "" : " ") + methods::pm_info(m).key;
@@ -154,15 +173,16 @@ void plot_parallax_sweep(const methods::Sweep& sw, const std::string& out_dir) {
             const std::string d = out_dir + "/" + base + ".dat";
             const std::string gp = strf(
                 "set terminal pngcairo size 1500,460 font ',10'\nset output '%s/%s.png'\n"
-                "names = '%s'\nset multiplot layout 1,3 title 'parallax, map %s, camera at %g deg: error against "
+                "names = '%s'\ncolors = '#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #000000'\n"
+                "set multiplot layout 1,3 title 'parallax, map %s, camera at %g deg: error against "
                 "mean height fetches'\nset grid\nset logscale x 2\nset xrange [0.9:40]\nset xlabel 'mean height "
                 "fetches'\nset key outside bottom center maxrows 3 font ',8'\n"
                 "set logscale y\nset ylabel 'texels'\nset title 'mean error'\n"
-                "plot for [i=1:words(names)] '%s' index (i-1) u 2:(max($3,0.001)) w lp pt 7 ps 0.5 t word(names, i)\n"
+                "plot for [i=1:words(names)] '%s' index (i-1) u 2:(max($3,0.001)) w lp pt 7 ps 0.5 lc rgb word(colors, i) t word(names, i)\n"
                 "set title '99th percentile'\n"
-                "plot for [i=1:words(names)] '%s' index (i-1) u 2:(max($5,0.001)) w lp pt 7 ps 0.5 t word(names, i)\n"
+                "plot for [i=1:words(names)] '%s' index (i-1) u 2:(max($5,0.001)) w lp pt 7 ps 0.5 lc rgb word(colors, i) t word(names, i)\n"
                 "unset logscale y\nset ylabel '%%'\nset title 'fragments more than 1 texel off'\n"
-                "plot for [i=1:words(names)] '%s' index (i-1) u 2:7 w lp pt 7 ps 0.5 t word(names, i)\n"
+                "plot for [i=1:words(names)] '%s' index (i-1) u 2:7 w lp pt 7 ps 0.5 lc rgb word(colors, i) t word(names, i)\n"
                 "unset multiplot\n",
                 out_dir.c_str(), base.c_str(), names.c_str(), map.c_str(), el, d.c_str(), d.c_str(), d.c_str());
             if (!methods_cli::run_gnuplot(out_dir, base, "max(a,b) = a > b ? a : b\n" + gp)) {
@@ -191,8 +211,8 @@ void render_parallax_pictures(const std::vector<methods::HeightMap>& maps, const
         const render::Image panel = render::make_panel(
             {{&none, "normal mapping", "no offset"},
              {&k, "Kaneko", "h (Vu, Vv) / Vh"},
-             {&p, "paper", "from the polygon, " + cap},
-             {&t, "paper", "from the top, " + cap},
+             {&p, "paper", "start t = 0, " + cap},
+             {&t, "paper", "start at top, " + cap},
              {&ex, "exact", "nearest intersection"},
              {&ep, "error: paper", "1 / 4 / 16 texels"},
              {&et, "error: from the top", "1 / 4 / 16 texels"}},
