@@ -163,7 +163,8 @@ deps-synth:
 	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
 
 synth: build deps-synth
-	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit --configs up5k,default \
+	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit,parallax_iter \
+	    --configs up5k,default \
 	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)

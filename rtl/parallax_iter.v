@@ -83,7 +83,7 @@ module parallax_iter #(
 
 `ifndef SYNTHESIS
     initial begin
-        if (SLOTS < 1 || (1 << ID_W) < SLOTS || UV_W < 2 || H_W < 2 || V_W < 2 || V_F < 0 || V_F >= H_W + V_W ||
+        if (SLOTS < 1 || (1 << ID_W) < SLOTS || UV_W < 2 || H_W < 2 || V_W < 2 || V_F < 1 || V_F >= H_W + V_W ||
             ITER_W < 1 || TAG_W < 1) begin
             $display("parallax_iter: bad parameters SLOTS=%0d ID_W=%0d UV_W=%0d H_W=%0d V_W=%0d V_F=%0d ITER_W=%0d TAG_W=%0d (%m)",
                      SLOTS, ID_W, UV_W, H_W, V_W, V_F, ITER_W, TAG_W);
@@ -92,54 +92,50 @@ module parallax_iter #(
     end
 `endif
 
-    // ---- the slots ----
-    reg [3*SLOTS-1:0] st;                // the slots' states, 3 bits each
-    reg [UV_W-1:0]   sl_u  [0:SLOTS-1];
-    reg [UV_W-1:0]   sl_v  [0:SLOTS-1];
-    reg [H_W-1:0]    sl_hv [0:SLOTS-1];  // hV_(i-1)
-    reg [H_W-1:0]    sl_d  [0:SLOTS-1];  // d_(i-1)
-    reg [V_W-1:0]    sl_vu [0:SLOTS-1];
-    reg [V_W-1:0]    sl_vv [0:SLOTS-1];
-    reg [V_W-1:0]    sl_vh [0:SLOTS-1];
-    reg [H_W-1:0]    sl_thr[0:SLOTS-1];
-    reg [ITER_W-1:0] sl_max[0:SLOTS-1];
-    reg [ITER_W-1:0] sl_it [0:SLOTS-1];  // steps done
-    reg              sl_cv [0:SLOTS-1];
-    reg [TAG_W-1:0]  sl_tag[0:SLOTS-1];
+    // ---- the slots: one generate block each; their fields read back through flat buses ----
+    wire [3*SLOTS-1:0]      st_all;
+    wire [UV_W*SLOTS-1:0]   u_all, v_all;
+    wire [H_W*SLOTS-1:0]    hv_all, d_all, thr_all;  // hV_(i-1), d_(i-1)
+    wire [V_W*SLOTS-1:0]    vu_all, vv_all, vh_all;
+    wire [ITER_W*SLOTS-1:0] max_all, it_all;         // it: steps done
+    wire [SLOTS-1:0]        cv_all;
+    wire [TAG_W*SLOTS-1:0]  tag_all;
 
-    // the lowest-numbered slot in each state of interest
-    reg            free_any, fetch_any, done_any, busy_slots;
-    reg [SL_W-1:0] free_idx, fetch_idx, done_idx;
+    // the lowest-numbered slot in each state of interest: one-hot, and its number
+    wire [SLOTS-1:0] is_free, is_fetch, is_done;
+    genvar g;
+    generate
+        for (g = 0; g < SLOTS; g = g + 1) begin : g_state
+            assign is_free[g] = st_all[3 * g +: 3] == S_FREE;
+            assign is_fetch[g] = st_all[3 * g +: 3] == S_FETCH;
+            assign is_done[g] = st_all[3 * g +: 3] == S_DONE;
+        end
+    endgenerate
+    reg [SLOTS-1:0] free_first, fetch_first, done_first;
+    reg             free_any, fetch_any, done_any;
+    reg [SL_W-1:0]  fetch_idx;
     integer k;
     always @* begin
         free_any = 1'b0;
         fetch_any = 1'b0;
         done_any = 1'b0;
-        busy_slots = 1'b0;
-        free_idx = {SL_W{1'b0}};
         fetch_idx = {SL_W{1'b0}};
-        done_idx = {SL_W{1'b0}};
-        for (k = SLOTS - 1; k >= 0; k = k - 1) begin
-            if (st[3 * k +: 3] == S_FREE) begin
-                free_any = 1'b1;
-                free_idx = k[SL_W-1:0];
-            end
-            if (st[3 * k +: 3] == S_FETCH) begin
-                fetch_any = 1'b1;
-                fetch_idx = k[SL_W-1:0];
-            end
-            if (st[3 * k +: 3] == S_DONE) begin
-                done_any = 1'b1;
-                done_idx = k[SL_W-1:0];
-            end
-            if (st[3 * k +: 3] != S_FREE) busy_slots = 1'b1;
+        for (k = 0; k < SLOTS; k = k + 1) begin
+            free_first[k] = is_free[k] & ~free_any;
+            fetch_first[k] = is_fetch[k] & ~fetch_any;
+            done_first[k] = is_done[k] & ~done_any;
+            free_any = free_any | is_free[k];
+            fetch_any = fetch_any | is_fetch[k];
+            done_any = done_any | is_done[k];
+            fetch_idx = fetch_idx | (fetch_first[k] ? k[SL_W-1:0] : {SL_W{1'b0}});
         end
     end
 
     assign s_ready = free_any;
-    assign busy = busy_slots | m_valid;
+    assign busy = (|(~is_free)) | m_valid;
     wire accept = s_valid & free_any;
     wire req_load = (~req_valid | req_ready) & fetch_any;
+    wire out_load = (~m_valid | m_ready) & done_any;
 
     // ---- a response starts the slot's step ----
     wire rsp_in_range;
@@ -152,87 +148,206 @@ module parallax_iter #(
         end
     endgenerate
     wire [SL_W-1:0] rsp_idx = rsp_in_range ? rsp_id : {SL_W{1'b0}};
-    wire rsp_ok = rsp_valid & rsp_in_range & (st[3 * rsp_idx +: 3] == S_WAIT);
+    wire [SLOTS-1:0] one = {{(SLOTS - 1) {1'b0}}, 1'b1};
+    wire [SLOTS-1:0] rsp_sel = rsp_in_range ? one << rsp_id : {SLOTS{1'b0}};
+
+    // the slots' fields read back: AND-OR multiplexers on one-hot selects (no index arithmetic)
+    reg [2:0]        rsp_st;
+    reg [UV_W-1:0]   rsp_u, rsp_v, fetch_u, fetch_v, done_u, done_v;
+    reg [H_W-1:0]    rsp_hv, rsp_d, rsp_thr;
+    reg [V_W-1:0]    rsp_vu, rsp_vv, rsp_vh;
+    reg [ITER_W-1:0] rsp_itc, rsp_max, done_it;
+    reg              done_cv;
+    reg [TAG_W-1:0]  done_tag;
+    always @* begin
+        rsp_st = 3'd0;
+        {rsp_u, rsp_v, fetch_u, fetch_v, done_u, done_v} = {(6 * UV_W) {1'b0}};
+        {rsp_hv, rsp_d, rsp_thr} = {(3 * H_W) {1'b0}};
+        {rsp_vu, rsp_vv, rsp_vh} = {(3 * V_W) {1'b0}};
+        {rsp_itc, rsp_max, done_it} = {(3 * ITER_W) {1'b0}};
+        done_cv = 1'b0;
+        done_tag = {TAG_W{1'b0}};
+        for (k = 0; k < SLOTS; k = k + 1) begin
+            if (rsp_sel[k]) begin
+                rsp_st = rsp_st | st_all[3 * k +: 3];
+                rsp_u = rsp_u | u_all[UV_W * k +: UV_W];
+                rsp_v = rsp_v | v_all[UV_W * k +: UV_W];
+                rsp_hv = rsp_hv | hv_all[H_W * k +: H_W];
+                rsp_d = rsp_d | d_all[H_W * k +: H_W];
+                rsp_thr = rsp_thr | thr_all[H_W * k +: H_W];
+                rsp_vu = rsp_vu | vu_all[V_W * k +: V_W];
+                rsp_vv = rsp_vv | vv_all[V_W * k +: V_W];
+                rsp_vh = rsp_vh | vh_all[V_W * k +: V_W];
+                rsp_itc = rsp_itc | it_all[ITER_W * k +: ITER_W];
+                rsp_max = rsp_max | max_all[ITER_W * k +: ITER_W];
+            end
+            if (fetch_first[k]) begin
+                fetch_u = fetch_u | u_all[UV_W * k +: UV_W];
+                fetch_v = fetch_v | v_all[UV_W * k +: UV_W];
+            end
+            if (done_first[k]) begin
+                done_u = done_u | u_all[UV_W * k +: UV_W];
+                done_v = done_v | v_all[UV_W * k +: UV_W];
+                done_it = done_it | it_all[ITER_W * k +: ITER_W];
+                done_cv = done_cv | cv_all[k];
+                done_tag = done_tag | tag_all[TAG_W * k +: TAG_W];
+            end
+        end
+    end
+    wire rsp_ok = rsp_valid & rsp_in_range & (rsp_st == S_WAIT);
+
+    // ---- stage 0: the slot's operands, captured with the response (the slot mux gets a clock of its own) ----
+    reg              op_valid;
+    reg [UV_W-1:0]   op_u, op_v;
+    reg [H_W-1:0]    op_h, op_hv, op_d;
+    reg [V_W-1:0]    op_vu, op_vv, op_vh;
+    // what the write-back needs, seven clocks later: the slot, its threshold, its step count and cap
+    localparam SIDE_W = SL_W + H_W + 2 * ITER_W;
+    reg [SIDE_W-1:0] op_side;
+    always @(posedge clk) begin
+        if (rst) op_valid <= 1'b0;
+        else op_valid <= rsp_ok;
+        op_u <= rsp_u;
+        op_v <= rsp_v;
+        op_h <= rsp_h;
+        op_hv <= rsp_hv;
+        op_d <= rsp_d;
+        op_vu <= rsp_vu;
+        op_vv <= rsp_vv;
+        op_vh <= rsp_vh;
+        op_side <= {rsp_idx, rsp_thr, rsp_itc, rsp_max};
+    end
 
     wire            step_valid;
     wire [UV_W-1:0] step_u, step_v;
     wire [H_W-1:0]  step_hv, step_d;
     parallax_step #(.UV_W(UV_W), .H_W(H_W), .V_W(V_W), .V_F(V_F)) u_step (
-        .clk(clk), .rst(rst), .in_valid(rsp_ok),
-        .u_i(sl_u[rsp_idx]), .v_i(sl_v[rsp_idx]), .h_i(rsp_h), .hv_prev_i(sl_hv[rsp_idx]),
-        .d_prev_i(sl_d[rsp_idx]), .vu_i(sl_vu[rsp_idx]), .vv_i(sl_vv[rsp_idx]), .vh_i(sl_vh[rsp_idx]),
-        .out_valid(step_valid), .u_o(step_u), .v_o(step_v), .hv_o(step_hv), .d_o(step_d)
+        .clk(clk), .rst(rst), .in_valid(op_valid),
+        .u_i(op_u), .v_i(op_v), .h_i(op_h), .hv_prev_i(op_hv), .d_prev_i(op_d), .vu_i(op_vu), .vv_i(op_vv),
+        .vh_i(op_vh), .out_valid(step_valid), .u_o(step_u), .v_o(step_v), .hv_o(step_hv), .d_o(step_d)
     );
-    // the slot number travels beside the step's two stages
-    reg [SL_W-1:0] id1, id2;
+    // the side data travels beside the step's seven stages
+    reg [7*SIDE_W-1:0] side;
+    always @(posedge clk) side <= {side[6*SIDE_W-1:0], op_side};
+    wire [SIDE_W-1:0] wb_side = side[6*SIDE_W +: SIDE_W];
+    wire [SL_W-1:0]   wb_id = wb_side[SIDE_W-1 -: SL_W];
+    wire [H_W-1:0]    wb_thr = wb_side[2 * ITER_W +: H_W];
+    wire [ITER_W-1:0] wb_it = wb_side[ITER_W +: ITER_W] + {{(ITER_W - 1) {1'b0}}, 1'b1};  // steps after this one
+    wire              wb_cap = wb_it == wb_side[0 +: ITER_W];                          // the cap is spent
+
+    // ---- the step's result: stop or go on. |d| <= threshold as -threshold <= d <= threshold: two carry
+    // chains side by side instead of a negation and a comparison in a row ----
+    wire signed [H_W:0] d_x = {step_d[H_W-1], step_d};
+    wire signed [H_W:0] thr_x = {1'b0, wb_thr};
+    wire signed [H_W+1:0] d_plus_thr = {d_x[H_W], d_x} + {thr_x[H_W], thr_x};
+    // registered before it reaches the slots (the write-back gets a clock of its own)
+    reg              wbq_valid, wbq_le, wbq_ge, wbq_cap;
+    reg [SL_W-1:0]   wbq_id;
+    reg [ITER_W-1:0] wbq_it;
+    reg [UV_W-1:0]   wbq_u, wbq_v;
+    reg [H_W-1:0]    wbq_hv, wbq_d;
     always @(posedge clk) begin
-        id1 <= rsp_idx;
-        id2 <= id1;
+        if (rst) wbq_valid <= 1'b0;
+        else wbq_valid <= step_valid;
+        wbq_le <= d_x <= thr_x;          // d <= threshold
+        wbq_ge <= ~d_plus_thr[H_W+1];    // d >= -threshold
+        wbq_cap <= wb_cap;
+        wbq_id <= wb_id;
+        wbq_it <= wb_it;
+        wbq_u <= step_u;
+        wbq_v <= step_v;
+        wbq_hv <= step_hv;
+        wbq_d <= step_d;
     end
+    wire wbq_conv = wbq_le & wbq_ge;
 
-    // ---- the step's result: stop or go on ----
-    wire [H_W-1:0]    abs_d = step_d[H_W-1] ? (~step_d + {{(H_W - 1) {1'b0}}, 1'b1}) : step_d;
-    wire              wb_conv = abs_d <= sl_thr[id2];
-    wire [ITER_W-1:0] wb_it = sl_it[id2] + {{(ITER_W - 1) {1'b0}}, 1'b1};
-    wire              wb_cap = wb_it == sl_max[id2];
+    // the slot each event is for, one-hot
+    wire [SLOTS-1:0] acc_oh = accept ? free_first : {SLOTS{1'b0}};
+    wire [SLOTS-1:0] reqd_oh = (req_valid & req_ready) ? one << req_id : {SLOTS{1'b0}};
+    wire [SLOTS-1:0] reql_oh = req_load ? fetch_first : {SLOTS{1'b0}};
+    wire [SLOTS-1:0] rsp_oh = rsp_ok ? rsp_sel : {SLOTS{1'b0}};
+    wire [SLOTS-1:0] wb_oh = wbq_valid ? one << wbq_id : {SLOTS{1'b0}};
+    wire [SLOTS-1:0] out_oh = out_load ? done_first : {SLOTS{1'b0}};
 
+    generate
+        for (g = 0; g < SLOTS; g = g + 1) begin : g_slot
+            // the events of one clock are for slots in different states, so for different slots
+            reg [2:0]        st_q;
+            reg [UV_W-1:0]   u_q, v_q;
+            reg [H_W-1:0]    hv_q, d_q, thr_q;
+            reg [V_W-1:0]    vu_q, vv_q, vh_q;
+            reg [ITER_W-1:0] max_q, it_q;
+            reg              cv_q;
+            reg [TAG_W-1:0]  tag_q;
+            always @(posedge clk) begin
+                if (rst) st_q <= S_FREE;
+                else if (acc_oh[g]) st_q <= s_max_iter == {ITER_W{1'b0}} ? S_DONE : S_FETCH;
+                else if (reqd_oh[g]) st_q <= S_WAIT;
+                else if (reql_oh[g]) st_q <= S_REQ;
+                else if (rsp_oh[g]) st_q <= S_STEP;
+                else if (wb_oh[g]) st_q <= (wbq_conv | wbq_cap) ? S_DONE : S_FETCH;
+                else if (out_oh[g]) st_q <= S_FREE;
+                if (acc_oh[g]) begin
+                    u_q <= s_u;
+                    v_q <= s_v;
+                    hv_q <= s_hv0;
+                    d_q <= {H_W{1'b0}};
+                    vu_q <= s_vu;
+                    vv_q <= s_vv;
+                    vh_q <= s_vh;
+                    thr_q <= s_threshold;
+                    max_q <= s_max_iter;
+                    it_q <= {ITER_W{1'b0}};
+                    cv_q <= 1'b0;
+                    tag_q <= s_tag;
+                end else if (wb_oh[g]) begin
+                    it_q <= wbq_it;
+                    cv_q <= wbq_conv;
+                    if (!wbq_conv) begin  // converged: P_i stays the answer
+                        u_q <= wbq_u;
+                        v_q <= wbq_v;
+                        hv_q <= wbq_hv;
+                        d_q <= wbq_d;
+                    end
+                end
+            end
+            assign st_all[3 * g +: 3] = st_q;
+            assign u_all[UV_W * g +: UV_W] = u_q;
+            assign v_all[UV_W * g +: UV_W] = v_q;
+            assign hv_all[H_W * g +: H_W] = hv_q;
+            assign d_all[H_W * g +: H_W] = d_q;
+            assign thr_all[H_W * g +: H_W] = thr_q;
+            assign vu_all[V_W * g +: V_W] = vu_q;
+            assign vv_all[V_W * g +: V_W] = vv_q;
+            assign vh_all[V_W * g +: V_W] = vh_q;
+            assign max_all[ITER_W * g +: ITER_W] = max_q;
+            assign it_all[ITER_W * g +: ITER_W] = it_q;
+            assign cv_all[g] = cv_q;
+            assign tag_all[TAG_W * g +: TAG_W] = tag_q;
+        end
+    endgenerate
+
+    // ---- the request and result registers ----
     always @(posedge clk) begin
         if (rst) begin
-            for (k = 0; k < SLOTS; k = k + 1) st[3 * k +: 3] <= S_FREE;
             req_valid <= 1'b0;
             m_valid <= 1'b0;
         end else begin
-            // a new fragment into the lowest free slot
-            if (accept) begin
-                st[3 * free_idx +: 3] <= s_max_iter == {ITER_W{1'b0}} ? S_DONE : S_FETCH;
-                sl_u[free_idx] <= s_u;
-                sl_v[free_idx] <= s_v;
-                sl_hv[free_idx] <= s_hv0;
-                sl_d[free_idx] <= {H_W{1'b0}};
-                sl_vu[free_idx] <= s_vu;
-                sl_vv[free_idx] <= s_vv;
-                sl_vh[free_idx] <= s_vh;
-                sl_thr[free_idx] <= s_threshold;
-                sl_max[free_idx] <= s_max_iter;
-                sl_it[free_idx] <= {ITER_W{1'b0}};
-                sl_cv[free_idx] <= 1'b0;
-                sl_tag[free_idx] <= s_tag;
-            end
-            // the request register: the held request leaves, the next one is loaded
-            if (req_valid && req_ready) st[3 * req_id +: 3] <= S_WAIT;
             if (req_load) begin
-                st[3 * fetch_idx +: 3] <= S_REQ;
                 req_valid <= 1'b1;
-                req_u <= sl_u[fetch_idx];
-                req_v <= sl_v[fetch_idx];
+                req_u <= fetch_u;
+                req_v <= fetch_v;
                 req_id <= fetch_idx;
             end else if (req_ready) begin
                 req_valid <= 1'b0;
             end
-            if (rsp_ok) st[3 * rsp_idx +: 3] <= S_STEP;
-            // the step's write-back
-            if (step_valid) begin
-                sl_it[id2] <= wb_it;
-                if (wb_conv) begin
-                    sl_cv[id2] <= 1'b1;
-                    st[3 * id2 +: 3] <= S_DONE;
-                end else begin
-                    sl_u[id2] <= step_u;
-                    sl_v[id2] <= step_v;
-                    sl_hv[id2] <= step_hv;
-                    sl_d[id2] <= step_d;
-                    st[3 * id2 +: 3] <= wb_cap ? S_DONE : S_FETCH;
-                end
-            end
-            // the result register
-            if ((~m_valid | m_ready) & done_any) begin
-                st[3 * done_idx +: 3] <= S_FREE;
+            if (out_load) begin
                 m_valid <= 1'b1;
-                m_u <= sl_u[done_idx];
-                m_v <= sl_v[done_idx];
-                m_iters <= sl_it[done_idx];
-                m_converged <= sl_cv[done_idx];
-                m_tag <= sl_tag[done_idx];
+                m_u <= done_u;
+                m_v <= done_v;
+                m_iters <= done_it;
+                m_converged <= done_cv;
+                m_tag <= done_tag;
             end else if (m_ready) begin
                 m_valid <= 1'b0;
             end

@@ -86,7 +86,25 @@ def rom_images(config, out, specrom):
     return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
 
 
+# Companion modules (docs/methods.md): not the core; their own file list and wrapper, no ROMs, one configuration.
+COMPANION = {"parallax_iter": ("rtl/methods.f", "syn/parallax_wrap.v", "parallax_wrap")}
+
+
+def companion_script(target, top, json_out, stat_out):
+    flist, wrap, wtop = COMPANION[top]
+    with open(os.path.join(ROOT, flist)) as f:
+        files = " ".join(os.path.join("rtl", l.strip()) for l in f if l.strip())
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
+        "ecp5-25f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
+        "xc7": "synth_xilinx -family xc7 -top %s" % wtop,
+    }[target]
+    return "read_verilog %s %s; %s; tee -o %s stat" % (files, wrap, synth, stat_out)
+
+
 def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
+    if top in COMPANION:
+        return companion_script(target, top, json_out, stat_out)
     files = " ".join(sorted(os.path.join("rtl", f) for f in os.listdir(os.path.join(ROOT, "rtl")) if f.endswith(".v")))
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
@@ -173,8 +191,8 @@ def main():
         if t not in GOALS:
             fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
     for t in args.tops:
-        if t not in ("spec_stream", "spec_unit"):
-            fail("unknown top '%s' (spec_stream, spec_unit)" % t)
+        if t not in ("spec_stream", "spec_unit") and t not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (t, ", ".join(COMPANION)))
     for c in args.configs:
         if c not in CONFIGS:
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
@@ -196,7 +214,7 @@ def main():
         elif target == "ice40-up5k" and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
         for top in args.tops:
-            for config in args.configs:
+            for config in (args.configs if top not in COMPANION else ["default"]):
                 print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
                 results.append(one(target, top, config, args, t))
 

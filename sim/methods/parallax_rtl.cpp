@@ -8,7 +8,7 @@
 
 #include "Vparallax_iter.h"
 #include "Vparallax_iter_s1.h"
-#include "Vparallax_iter_s8.h"
+#include "Vparallax_iter_s16.h"
 #include "verilated.h"
 
 namespace spec {
@@ -157,14 +157,14 @@ IterRunResult run(const std::vector<IterJob>& jobs, const HeightFetch& fetch, co
 }
 }  // namespace
 
-int iter_slots(IterBuild b) { return b == IterBuild::slots1 ? 1 : b == IterBuild::slots4 ? 4 : 8; }
+int iter_slots(IterBuild b) { return b == IterBuild::slots1 ? 1 : b == IterBuild::slots4 ? 4 : 16; }
 
 IterRunResult run_parallax_iter(IterBuild b, const std::vector<IterJob>& jobs, const HeightFetch& fetch,
                                 const IterRunConfig& cfg) {
     switch (b) {
         case IterBuild::slots1: return run<Vparallax_iter_s1>(jobs, fetch, cfg, 1);
         case IterBuild::slots4: return run<Vparallax_iter>(jobs, fetch, cfg, 4);
-        default: return run<Vparallax_iter_s8>(jobs, fetch, cfg, 8);
+        default: return run<Vparallax_iter_s16>(jobs, fetch, cfg, 16);
     }
 }
 
@@ -173,7 +173,7 @@ std::vector<ThroughputCell> iter_throughput(const std::vector<IterJob>& jobs, co
     const StepFormat fmt;
     std::vector<ThroughputCell> out;
     for (int lat : latencies) {
-        for (IterBuild b : {IterBuild::slots1, IterBuild::slots4, IterBuild::slots8}) {
+        for (IterBuild b : {IterBuild::slots1, IterBuild::slots4, IterBuild::slots16}) {
             IterRunConfig cfg;
             cfg.latency_min = cfg.latency_max = lat;
             const IterRunResult r = run_parallax_iter(b, jobs, fetch, cfg);

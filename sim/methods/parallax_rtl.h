@@ -31,9 +31,9 @@ struct IterRunResult {
     bool stable = true;             // req_* and m_* held still while valid and not ready
 };
 
-// The Verilated builds of rtl/parallax_iter.v: SLOTS = 1, 4 (the default) and 8, each with TAG_W = 16 and the
+// The Verilated builds of rtl/parallax_iter.v: SLOTS = 1, 4 (the default) and 16, each with TAG_W = 16 and the
 // default formats (StepFormat).
-enum class IterBuild { slots1, slots4, slots8 };
+enum class IterBuild { slots1, slots4, slots16 };
 int iter_slots(IterBuild b);
 IterRunResult run_parallax_iter(IterBuild b, const std::vector<IterJob>& jobs, const HeightFetch& fetch,
                                 const IterRunConfig& cfg);

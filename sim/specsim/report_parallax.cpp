@@ -134,7 +134,7 @@ void report_parallax_sweep(const methods::Sweep& sw, methods_cli::DocTables* doc
 }
 
 void report_parallax_rtl(const std::vector<methods::ThroughputCell>& cells, uint64_t fragments, methods_cli::DocTables* doc) {
-    std::string t = "| memory latency (clocks) | SLOTS = 1 | SLOTS = 4 | SLOTS = 8 |\n|---|---|---|---|\n";
+    std::string t = "| memory latency (clocks) | SLOTS = 1 | SLOTS = 4 | SLOTS = 16 |\n|---|---|---|---|\n";
     uint64_t bad = 0;
     for (size_t k = 0; k < cells.size(); k += 3) {
         t += strf("| %d |", cells[k].latency);
