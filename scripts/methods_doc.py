@@ -4,6 +4,8 @@ parallax (--tables FILE writes them as named blocks); `make methods` embeds them
 that the documents carry what the commands print now.
 
 Usage: methods_doc.py embed|check DOC [DOC ...] -- TABLES [TABLES ...]
+       methods_doc.py synth DOC SYNTH_JSON     (the doc's make-synth row of that run's target and top: LUT, FF,
+                                                BRAM and DSP must equal the JSON's; ctest methods_synth_cells)
 
 A block in a document is
     <!-- methods:NAME -->
@@ -23,7 +25,31 @@ def blocks(text):
     return {m.group(1): m.group(2) for m in BLOCK.finditer(text)}
 
 
+def synth(doc, js):
+    import json
+    r = json.load(open(js))
+    text = open(doc, encoding="utf-8").read()
+    m = re.search(r"<!-- synth:%s -->\n(.*?)<!-- /synth:%s -->" % (r["top"], r["top"]), text, re.S)
+    if not m:
+        print("methods_doc: %s has no <!-- synth:%s --> block" % (doc, r["top"]), file=sys.stderr)
+        return 1
+    for line in m.group(1).splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if len(cells) >= 7 and cells[0] == r["target"] and cells[1] == r["top"]:
+            want = [str(r[k]) for k in ("lut", "ff", "bram", "dsp")]
+            if cells[3:7] != want:
+                print("methods_doc: %s: %s %s row says LUT/FF/BRAM/DSP %s, synthesis gives %s (run 'make synth' and "
+                      "update the row)" % (doc, r["target"], r["top"], "/".join(cells[3:7]), "/".join(want)))
+                return 1
+            print("methods_doc: %s %s cells as in %s: %s" % (r["target"], r["top"], doc, "/".join(want)))
+            return 0
+    print("methods_doc: %s has no %s %s row" % (doc, r["target"], r["top"]), file=sys.stderr)
+    return 1
+
+
 def main(argv):
+    if len(argv) == 3 and argv[0] == "synth":
+        return synth(argv[1], argv[2])
     if len(argv) < 4 or argv[0] not in ("embed", "check") or "--" not in argv:
         print(__doc__.strip(), file=sys.stderr)
         return 2

