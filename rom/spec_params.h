@@ -27,6 +27,7 @@ constexpr int DESC_DZETA_LSB = 96;  // spec_stream descriptor: dzeta at [DESC_DZ
 constexpr int DATAPATH_LATENCY = 12;  // spec_datapath: register 8 to output 27, clocks
 constexpr int UNIT_FIRST_PIXEL = 15;  // spec_unit: pixel i valid in cycle t + this + 2i after Start in t
 constexpr int STREAM_LATENCY = 20;  // spec_stream: descriptor accepted in a -> first pixel in a + this
+constexpr int STREAM_ACC = 5;  // spec_stream: stages of the pipelined accumulator (register 8)
 constexpr int TBL_DW = 17;
 constexpr int ROM9_DEPTH = 1024;
 constexpr int ROM12_DEPTH = 16384;

@@ -26,9 +26,9 @@ int cmd_stream_diagram(int argc, char** argv);  // AXI timing from a simulation 
 int cmd_compare(int argc, char** argv);  // patent vs tuned vs prototype per BRDF range (cmd_compare.cpp)
 int cmd_tables(int argc, char** argv);   // table sets and sizes against ROM bits (cmd_tables.cpp)
 
-int cmd_highlight(int argc, char** argv);  // companion paper A measured (cmd_methods.cpp)
-int cmd_normalize(int argc, char** argv);  // companion paper B measured (cmd_methods.cpp)
-int cmd_parallax(int argc, char** argv);   // companion paper C measured (cmd_methods.cpp)
+int cmd_highlight(int argc, char** argv);  // companion paper A measured (cmd_highlight.cpp, report_highlight.cpp)
+int cmd_normalize(int argc, char** argv);  // companion paper B measured (cmd_normalize.cpp, report_normalize.cpp)
+int cmd_parallax(int argc, char** argv);   // companion paper C measured (cmd_parallax.cpp, report_parallax.cpp)
 
 // The usage lines, for specsim --help and COMMAND --help: each command's block starts with a line
 // "  NAME  ..." (two spaces, the name) and runs to the next such line.
@@ -40,6 +40,6 @@ extern const char* const kVectorsUsage;   // cmd_vectors.cpp
 extern const char* const kRenderUsage;    // render, render-bench, plots, export-obj
 extern const char* const kBenchUsage;     // stream-diagram, bench-stream
 extern const char* const kTunedUsage;     // compare, tables
-extern const char* const kMethodsUsage;   // highlight, normalize, parallax
+extern const char* const kMethodsUsage;   // highlight, normalize, parallax (methods_usage.cpp)
 
 }  // namespace spec
