@@ -181,5 +181,34 @@ struct BoundRatios {
     }
 };
 
+#ifdef SPEC_SOURCE_DIR
+// The bound test `name`'s row of docs/verification.md's table ("| `Name` | 0.898 | ≤ 0.95 | 0.362 (n = 139) |
+// ≤ 0.45 |") must hold what the test measured (to the table's three decimals) and the limits it asserts: the
+// document cannot drift from the tests.
+inline void expect_documented_ratios(const std::string& name, const BoundRatios& w, double limit_error,
+                                     double limit_fixed) {
+    const std::string doc = read_file(std::string(SPEC_SOURCE_DIR) + "/docs/verification.md");
+    const size_t at = doc.find("| `" + name + "` |");
+    if (at == std::string::npos) {
+        ADD_FAILURE() << "docs/verification.md has no row for " << name;
+        return;
+    }
+    const std::string row = doc.substr(at, doc.find('\n', at) - at);
+    double v[4] = {0, 0, 0, 0};
+    unsigned n = 0;
+    const size_t cells = row.find("` |") + 3;
+    if (std::sscanf(row.c_str() + cells, " %lf | \xe2\x89\xa4 %lf | %lf (n = %u) | \xe2\x89\xa4 %lf |", &v[0], &v[1], &v[2], &n,
+                    &v[3]) != 5) {
+        ADD_FAILURE() << "docs/verification.md: cannot read the row " << row;
+        return;
+    }
+    EXPECT_NEAR(w.error_over_bound, v[0], 0.0005) << name << ": docs/verification.md says " << v[0];
+    EXPECT_EQ(limit_error, v[1]) << name << ": docs/verification.md's limit";
+    EXPECT_NEAR(w.fixed_over_slack, v[2], 0.0005) << name << ": docs/verification.md says " << v[2];
+    EXPECT_EQ(w.fixed_n, n) << name << ": docs/verification.md's n";
+    EXPECT_EQ(limit_fixed, v[3]) << name << ": docs/verification.md's limit";
+}
+#endif  // SPEC_SOURCE_DIR
+
 }  // namespace test
 }  // namespace spec
