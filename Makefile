@@ -226,6 +226,7 @@ test-asan: deps
 	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
 	$(call cmake_build,$(BUILD)-asan)
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	    ctest -j$(JOBS) --output-on-failure
 	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
 
