@@ -187,6 +187,7 @@ std::vector<Param> params(const Format& f) {
         {"DATAPATH_LATENCY", f.datapath_latency(), "spec_datapath: register 8 to output 27, clocks"},
         {"UNIT_FIRST_PIXEL", f.unit_first_pixel(), "spec_unit: pixel i valid in cycle t + this + 2i after Start in t"},
         {"STREAM_LATENCY", f.stream_latency(), "spec_stream: descriptor accepted in a -> first pixel in a + this"},
+        {"STREAM_ACC", f.stream_acc(), "spec_stream: stages of the pipelined accumulator (register 8)"},
     };
 }
 
