@@ -80,6 +80,12 @@ lint: deps
 	        -GSCALE_FRAC=13 || exit 1; \
 	    echo "  $$top in the up5k configuration (INTERP = 1): clean"; \
 	done
+	@for lp in "2 0" "2 1" "4 0" "4 1"; do set -- $$lp; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 || exit 1; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 -GTBL_AW=8 \
+	        -GINTERP=1 -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1; \
+	    echo "  spec_stream with LANES = $$1, PACK = $$2 (default and up5k configurations): clean"; \
+	done
 	@for f in $(RTL_OTHER); do \
 	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \

