@@ -102,10 +102,13 @@ module spec_spangen #(
     // cycle (checked in simulation, proved by formal/fv_spec_stream.v). The head is a spec_ldreg: its load
     // stays logic in front of its flip-flops.
     reg tk, pl;
+    // pl_n = ~pl, a copy for the buffer's valid flags only (inverted, so that synthesis does not merge it with
+    // pl): pl and head_load fan out to the head's and prep's loads (over a hundred flip-flops), and the flags'
+    // next-state logic would otherwise wait for those nets' long routing.
+    reg pl_n;
     wire take = tk;                  // = ce & room & prep_v: the generator starts prep's span in the next beat
     wire prep_load = pl;             // = ~prep_v | take: prep takes the head
     wire head_load = ~head_v | pl;
-    wire head_out = pl & head_v;     // the head moves into prep in this cycle
     // The data registers load without conditions on the input: the head whenever it is free or moving on,
     // the tail whenever it is free (ready_q = ~tail_v after the first cycle out of reset); the valid flags
     // say what they hold.
@@ -113,8 +116,11 @@ module spec_spangen #(
     always @(posedge clk) begin
         if (ready_q) tail <= d_in;
     end
-    wire tail_v_d = tail_v ? ~head_out : (accept & head_v & ~head_out);
-    wire head_v_d = head_load ? (tail_v | accept) : head_v;
+    wire head_out_v = ~pl_n & head_v;  // the head moves into prep in this cycle
+    wire tail_v_d = tail_v ? ~head_out_v : (accept & head_v & ~head_out_v);
+    // = head_load ? (tail_v | accept) : head_v, written without the choice, so that head_v's flip-flop gets
+    // no enable (which would be head_load, the wide net)
+    wire head_v_d = accept | tail_v | (head_v & pl_n);
     always @(posedge clk) begin
         if (rst) begin
             head_v <= 1'b0;
@@ -308,9 +314,11 @@ module spec_spangen #(
         if (rst) begin
             tk <= 1'b0;
             pl <= 1'b1;
+            pl_n <= 1'b0;
         end else begin
             tk <= tk_d;
             pl <= pl_d;
+            pl_n <= ~pl_d;
         end
     end
 `ifndef SYNTHESIS
@@ -318,7 +326,7 @@ module spec_spangen #(
     reg past_rst = 1'b1;
     always @(posedge clk) past_rst <= rst;
     always @(posedge clk) begin
-        if (!rst && !past_rst && (tk != (ce & room & prep_v) || pl != (~prep_v | tk))) begin
+        if (!rst && !past_rst && (tk != (ce & room & prep_v) || pl != (~prep_v | tk) || pl_n == pl)) begin
             $display("spec_spangen: a registered enable differs from its definition (%m): an RTL bug");
             $fatal(1);
         end

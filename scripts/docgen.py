@@ -281,17 +281,32 @@ def block_fig11_waves(f):
 
 
 def block_synth_table(f):
-    rows = f.data("synth")
-    if isinstance(rows, dict):
-        rows = rows.get("results", [])
-    hdr = "| target | top | config | LUT | FF | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | ROMs in BRAM | goal met |"
-    out = [hdr, "|" + "---|" * 12]
+    d = f.data("synth")
+    rows = d.get("results", []) if isinstance(d, dict) else d
+    f1 = lambda v: "-" if v is None else "%.1f" % v
+    out = ["| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst of seeds %s | per seed | "
+           "icetime (MHz), worst | Mpixel/s | goal (MHz) | fits | goal met |" %
+           ("-".join(str(x) for x in (d["seeds"][0], d["seeds"][-1])) if isinstance(d, dict) else ""),
+           "|" + "---|" * 15]
     for r in rows:
-        out.append("| %s | %s | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s |" % (
-            r["target"], r["top"], r["config"], r["lut"], r["ff"], r["bram"], r["dsp"],
-            "-" if r.get("fmax_mhz") is None else "%.1f" % r["fmax_mhz"],
-            "-" if r.get("goal_mhz") is None else "%.1f" % r["goal_mhz"],
-            "yes" if r["fits"] else "no", "no" if r.get("roms_in_logic") else "yes", "yes" if r["met"] else "no"))
+        seeds = r.get("fmax_seeds") or []
+        out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
+            f1(r.get("fmax_mhz")), ", ".join("%.1f" % x for x in seeds if x is not None) or "-",
+            f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), f1(r.get("goal_mhz")),
+            "yes" if r["fits"] else "no", "-" if r.get("goal_mhz") is None else ("yes" if r["met"] else "no")))
+    return "\n".join(out)
+
+
+def block_bench_lanes(f):
+    b = f.data("bench_lanes")
+    out = ["| frame | spans | pixels | pixels per span | LANES = 1 | 2 | 2, PACK = 1 | 4 | 4, PACK = 1 |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    for r in b["rows"]:
+        p = r["ppc"]
+        out.append("| %dx%d | %d | %d | %.1f | %s |" % (
+            r["w"], r["h"], r["spans"], r["pixels"], r["pixels"] / max(1, r["spans"]),
+            " | ".join("%.3f" % p[k]["pixels_per_clock"] for k in ("l1", "l2", "l2p", "l4", "l4p"))))
     return "\n".join(out)
 
 
@@ -399,6 +414,7 @@ BLOCKS = {
     "fig11-waves": block_fig11_waves,
     "synth-table": block_synth_table,
     "bench-stream": block_bench_stream,
+    "bench-lanes": block_bench_lanes,
 }
 
 

@@ -308,7 +308,8 @@ def main():
     ap.add_argument("--lanes", default="1", help="spec_stream's LANES: 1, 2, 4 (comma-separated)")
     ap.add_argument("--runs", default="", help="exact runs target:top:config:lanes,... instead of the product")
     ap.add_argument("--seeds", default="1-5", help="placement seeds: N, N-M or a comma list (default 1-5)")
-    ap.add_argument("--data", default="", help="also write every run's figures to this JSON file")
+    ap.add_argument("--data", default="", help="also write the runs' figures into this JSON file (replacing "
+                    "their rows, keeping the others)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
     args = ap.parse_args()
     args.seeds = parse_seeds(args.seeds)
@@ -357,8 +358,19 @@ def main():
     with open(os.path.join(args.out, "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
     if args.data:
+        # the runs of this invocation replace their rows in FILE (if it exists), in SYNTH_ORDER's order
+        old = []
+        if os.path.exists(args.data):
+            try:
+                old = json.load(open(args.data)).get("results", [])
+            except (ValueError, AttributeError):
+                old = []
+        key = lambda r: (r["target"], r["top"], r["config"], r.get("lanes", 1))
+        new = {key(r): slim(r) for r in results}
+        rows = [new.pop(key(r)) if key(r) in new else r for r in old] + list(new.values())
         with open(args.data, "w") as f:
-            json.dump({"seeds": args.seeds, "results": [slim(r) for r in results]}, f, indent=1)
+            by_run = {run_name(r["target"], r["top"], r["config"], r.get("lanes", 1)): r for r in rows}
+            json.dump({"seeds": args.seeds, "results": rows, "by_run": by_run}, f, indent=1)
             f.write("\n")
     # per-target files: build/synth/<target>.json for the stream core in its first configuration, LANES = 1
     for target in TARGETS:

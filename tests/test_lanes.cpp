@@ -15,6 +15,9 @@
 #include "Vspec_stream_l4.h"
 #include "Vspec_stream_l4p.h"
 #include "analysis.h"
+#include "cmd_bench.h"
+#include "cmd_span.h"
+#include "cli.h"
 #include "spec_model.h"
 #include "spec_params.h"
 #include "stream_driver.h"
@@ -215,4 +218,42 @@ TEST(Lanes, ResetInTheMiddleOfASpan) {
         const auto spans = lane_spans(rng, m, 20, 30);
         expect_model(m, spans, d.run(spans, Stalls{0.8, 0.8}, rng));
     }
+}
+
+// specsim span --lanes / --pack: only with the stream model, in patent mode, LANES 1, 2, 4; --pack with 4.
+TEST(Lanes, SpanOptionsRefuseWhatNoCoreRuns) {
+    auto parse = [](std::vector<std::string> extra) {
+        std::vector<std::string> v{"specsim", "span", "--n", "3", "--c", "0.5", "--zeta0", "0", "--dzeta", "0.1",
+                                   "--len", "4"};
+        v.insert(v.end(), extra.begin(), extra.end());
+        std::vector<char*> argv;
+        for (auto& x : v) argv.push_back(&x[0]);
+        return parse_span(int(argv.size()), argv.data());
+    };
+    EXPECT_EQ(parse({"--model", "stream", "--lanes", "4", "--pack"}).lanes, 4);
+    EXPECT_TRUE(parse({"--model", "stream", "--lanes", "4", "--pack"}).pack);
+    EXPECT_THROW(parse({"--model", "stream", "--lanes", "3"}), UsageError);
+    EXPECT_THROW(parse({"--model", "stream", "--lanes", "8"}), UsageError);
+    EXPECT_THROW(parse({"--model", "rtl", "--lanes", "2"}), UsageError);
+    EXPECT_THROW(parse({"--model", "stream", "--lanes", "2", "--pack"}), UsageError);
+    EXPECT_THROW(parse({"--model", "stream", "--lanes", "2", "--mode", "tuned"}), UsageError);
+}
+
+// bench-lanes on a small frame of the default scene: every configuration gives all the pixels, the beats the
+// slot rules give, one beat per clock after the latency, and packing never costs beats.
+TEST(Lanes, BenchLanesOnSceneSpans) {
+    const auto spans = scene_spans("default", 96, 64);
+    ASSERT_GT(spans.size(), 20u);
+    const LanesRow r = bench_lanes_row(spans, 96, 64);
+    uint64_t px = 0;
+    for (const auto& s : spans) px += uint64_t(s.len) + 1;
+    EXPECT_EQ(r.pixels, px);
+    ASSERT_EQ(r.figures.size(), 5u);
+    for (const auto& f : r.figures) {
+        EXPECT_EQ(f.beats, ideal_beats(spans, f.lanes, f.pack)) << f.name;
+        EXPECT_LE(f.cycles, f.beats + spec_params::STREAM_LATENCY + 4) << f.name;
+        EXPECT_NEAR(f.ppc, double(px) / double(f.cycles), 1e-9) << f.name;
+    }
+    EXPECT_LE(r.figures[2].beats, r.figures[1].beats);   // 2 packed <= 2
+    EXPECT_LE(r.figures[4].beats, r.figures[3].beats);   // 4 packed <= 4
 }
