@@ -19,9 +19,10 @@ module spec_datapath #(
     parameter INTERP_FRAC = 10,
     parameter DELTA_W = 10,
     parameter TSEL_W = 2,
-    parameter PIPE = 0,
+    parameter PIPE = 0,    // 1: a register stage after each DSP block's output (spec_stream; 2 more clocks,
+                           //    3 with INTERP = 1)
     parameter CTRL = 1,    // 0: no valid/last pipeline (out_valid, out_last, busy = 0; the output register
-                           //    loads with every ce): the caller tracks its pixels (spec_stream)    // 1: a register stage after each DSP block's output (spec_stream; 3 more clocks)
+                           //    loads with every ce): the caller tracks its pixels (spec_stream)
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,

@@ -284,16 +284,14 @@ def block_synth_table(f):
     d = f.data("synth")
     rows = d.get("results", []) if isinstance(d, dict) else d
     f1 = lambda v: "-" if v is None else "%.1f" % v
-    out = ["| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst of seeds %s | per seed | "
-           "icetime (MHz), worst | Mpixel/s | goal (MHz) | fits | goal met |" %
-           ("-".join(str(x) for x in (d["seeds"][0], d["seeds"][-1])) if isinstance(d, dict) else ""),
-           "|" + "---|" * 15]
+    out = ["| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst seed | Fmax per seed 1, 2, ... | "
+           "icetime (MHz), worst | Mpixel/s | goal (MHz) | fits | goal met |", "|" + "---|" * 15]
     for r in rows:
         seeds = r.get("fmax_seeds") or []
         out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s |" % (
             r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
             f1(r.get("fmax_mhz")), ", ".join("%.1f" % x for x in seeds if x is not None) or "-",
-            f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), f1(r.get("goal_mhz")),
+            f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), "-" if r.get("goal_mhz") is None else "%g" % r["goal_mhz"],
             "yes" if r["fits"] else "no", "-" if r.get("goal_mhz") is None else ("yes" if r["met"] else "no")))
     return "\n".join(out)
 

@@ -293,7 +293,7 @@ def table(results):
     for r in results:
         out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s |" % (
             r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
-            f1(r.get("fmax_mhz")), f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), f1(r.get("goal_mhz")),
+            f1(r.get("fmax_mhz")), f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), "-" if r.get("goal_mhz") is None else "%g" % r["goal_mhz"],
             "yes" if r["fits"] else "no", "yes" if r["met"] else "no"))
     return "\n".join(out)
 
