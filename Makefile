@@ -86,6 +86,7 @@ sim: build
 
 roms: build
 	$(BUILD)/specrom --out rom
+	$(BUILD)/setuprom --out rom
 
 fig8: build
 	$(BUILD)/specsim fig8
