@@ -20,8 +20,8 @@
 `define SETUP_N1_START 60110279  // start length of the N1 lane, round(2^F * 4 / G^3)
 `define SETUP_LOG2_GAIN 12073397  // round(log2(G) * 2^LF)
 `define SETUP_HALF_PI 1686629713  // round(pi/2 * 2^ZF)
-`define SETUP_PI 3373259426  // round(pi * 2^ZF)
-`define SETUP_TWO_PI 6746518852  // round(2 pi * 2^ZF)
+`define SETUP_PI 34'd3373259426  // round(pi * 2^ZF)
+`define SETUP_TWO_PI 34'd6746518852  // round(2 pi * 2^ZF)
 `define SETUP_FLAT_Z 1024  // gamma below 2^FLAT_LOG2 rad, in angle-lane units: the span is flat
 `define SETUP_GAIN_N 11  // terms of the multiplication by G
 `define SETUP_HALF_N 11  // terms of the multiplication by G/2

@@ -209,4 +209,29 @@ SetupInput random_case(std::mt19937_64& rng, const SetupFormat& sf, SpanKind kin
     return in;
 }
 
+SetupInput random_raw(std::mt19937_64& rng, const SetupFormat& sf) {
+    SetupInput in;
+    const int32_t top = int32_t(1) << (sf.vec_w - 1);
+    auto comp = [&]() -> int32_t {
+        switch (rng() % 6) {
+            case 0: return 0;
+            case 1: return (rng() % 2) ? top - 1 : -top;
+            case 2: return static_cast<int32_t>(rng() % 7) - 3;
+            default: return static_cast<int32_t>(rng() % (2 * uint64_t(top))) - top;
+        }
+    };
+    int32_t* v[4] = {in.n1, in.n2, in.h1, in.h2};
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k) v[i][k] = comp();
+    if (rng() % 8 == 0)
+        for (int k = 0; k < 3; ++k) in.n2[k] = -in.n1[k] == top ? top - 1 : -in.n1[k];
+    if (rng() % 8 == 0)
+        for (int k = 0; k < 3; ++k) in.h2[k] = in.h1[k];
+    in.strength = static_cast<uint32_t>(rng() % (uint64_t(1) << sf.str_w));
+    in.n = static_cast<uint32_t>(rng() % 1024);
+    in.l = (rng() % 4) ? static_cast<uint32_t>(rng() % 40) : static_cast<uint32_t>(rng() % 65536);
+    in.midpoint = rng() % 4 == 0;
+    return in;
+}
+
 }  // namespace spec

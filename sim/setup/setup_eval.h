@@ -65,6 +65,9 @@ enum class SpanKind {
 const char* kind_name(SpanKind k);
 SetupInput random_case(std::mt19937_64& rng, const SetupFormat& sf, SpanKind kind, unsigned n, uint32_t max_len);
 
+// Any bit pattern: random components (small, extreme and zero ones too), strength, n, l and rule.
+SetupInput random_raw(std::mt19937_64& rng, const SetupFormat& sf);
+
 // Double in [-2, 2) -> component code (round to nearest, saturating).
 int32_t component_code(const SetupFormat& sf, double v);
 
