@@ -86,8 +86,22 @@ def rom_images(config, out, specrom):
     return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
 
 
+def core_files():
+    """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
+    with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
+        return [os.path.join("rtl", line.strip()) for line in f if line.strip()]
+
+
+def check_roms(config, rom9, rom12):
+    """The images must fit the parameters (syn/rom_check.py; Yosys skips the RTL's own checks)."""
+    cmd = [sys.executable, os.path.join(ROOT, "syn", "rom_check.py"), "--header", os.path.join(ROOT, "rom", "spec_params.vh"),
+           "--rom9", rom9, "--rom12", rom12] + ["-G%s=%d" % kv for kv in CONFIGS[config].items()]
+    if subprocess.call(cmd) != 0:
+        fail("the ROM images do not fit the %s configuration's parameters" % config)
+
+
 def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
-    files = " ".join(sorted(os.path.join("rtl", f) for f in os.listdir(os.path.join(ROOT, "rtl")) if f.endswith(".v")))
+    files = " ".join(core_files())
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
@@ -110,6 +124,7 @@ def one(target, top, config, args, tools):
     out = args.out
     name = "%s-%s-%s" % (target, top, config)
     rom9, rom12 = rom_images(config, out, args.specrom)
+    check_roms(config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
