@@ -24,6 +24,13 @@ constexpr long long HALF_PI = 1686629713;  // round(pi/2 * 2^ZF)
 constexpr long long PI = 3373259426;  // round(pi * 2^ZF)
 constexpr long long TWO_PI = 6746518852;  // round(2 pi * 2^ZF)
 constexpr long long FLAT_Z = 1024;  // gamma below 2^FLAT_LOG2 rad, in angle-lane units: the span is flat
+constexpr long long BEAT_W = 256;  // spec_setup / spec_shader: span-ends beat width (s_axis_tdata)
+constexpr long long BEAT_VEC_LSB = 0;  // span ends: N1, N2, H1, H2 (x, y, z each) at [BEAT_VEC_LSB + 16 * k +: VEC_W]
+constexpr long long BEAT_STR_LSB = 192;  // span ends: Is*ks at [BEAT_STR_LSB +: STR_W]
+constexpr long long BEAT_N_LSB = 208;  // span ends: n at [BEAT_N_LSB +: N_W]
+constexpr long long BEAT_L_LSB = 224;  // span ends: l at [BEAT_L_LSB +: L_W]
+constexpr long long BEAT_RULE_BIT = 240;  // span ends: gamma rule (1: midpoint)
+constexpr long long FLAGS_W = 7;  // spec_setup / spec_shader: flags on tuser
 constexpr long long GAIN_N = 11;  // terms of the multiplication by G
 constexpr long long HALF_N = 11;  // terms of the multiplication by G/2
 }  // namespace setup_params

@@ -23,6 +23,13 @@
 `define SETUP_PI 34'd3373259426  // round(pi * 2^ZF)
 `define SETUP_TWO_PI 34'd6746518852  // round(2 pi * 2^ZF)
 `define SETUP_FLAT_Z 1024  // gamma below 2^FLAT_LOG2 rad, in angle-lane units: the span is flat
+`define SETUP_BEAT_W 256  // spec_setup / spec_shader: span-ends beat width (s_axis_tdata)
+`define SETUP_BEAT_VEC_LSB 0  // span ends: N1, N2, H1, H2 (x, y, z each) at [BEAT_VEC_LSB + 16 * k +: VEC_W]
+`define SETUP_BEAT_STR_LSB 192  // span ends: Is*ks at [BEAT_STR_LSB +: STR_W]
+`define SETUP_BEAT_N_LSB 208  // span ends: n at [BEAT_N_LSB +: N_W]
+`define SETUP_BEAT_L_LSB 224  // span ends: l at [BEAT_L_LSB +: L_W]
+`define SETUP_BEAT_RULE_BIT 240  // span ends: gamma rule (1: midpoint)
+`define SETUP_FLAGS_W 7  // spec_setup / spec_shader: flags on tuser
 `define SETUP_GAIN_N 11  // terms of the multiplication by G
 `define SETUP_HALF_N 11  // terms of the multiplication by G/2
 // atan(2^-i) * 2^ZF for i = 0 .. ITERS-1, ZW bits each, i = 0 in the lowest bits

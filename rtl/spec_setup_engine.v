@@ -9,7 +9,7 @@
 // (3 clocks, + 1 for the memory), ITERS micro-rotations with the gain terms of t added beside them, write
 // a, b, t back (3 clocks). The runs (P1..Q1, the angles) are the table `run_*` below.
 //
-// Handshake: s_tready is 1 while idle (a register); m_tvalid, m_tdata, m_tuser are registers and hold until
+// Handshake: s_tready is 1 while idle (a register); m_tvalid and the output fields are registers and hold until
 // m_tready; a finished span waits for the output register to be free. rst: back to idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -38,13 +38,21 @@ module spec_setup_engine #(
 ) (
     input  wire         clk,
     input  wire         rst,
-    input  wire         s_tvalid,
-    output reg          s_tready,
-    input  wire [240:0] s_tdata,
-    output reg          m_tvalid,
-    input  wire         m_tready,
-    output reg  [127:0] m_tdata,
-    output reg  [6:0]   m_tuser
+    input  wire                s_tvalid,
+    output reg                 s_tready,
+    input  wire [12*VEC_W-1:0] s_vec,      // N1, N2, H1, H2; x, y, z each (x lowest)
+    input  wire [STR_W-1:0]    s_str,
+    input  wire [N_W-1:0]      s_n,
+    input  wire [L_W-1:0]      s_l,
+    input  wire                s_rule,
+    output reg                 m_tvalid,
+    input  wire                m_tready,
+    output reg  [C_W-1:0]      m_c,
+    output reg  [N_W-1:0]      m_n,
+    output reg  [L_W-1:0]      m_l,
+    output reg  [ANG_W-1:0]    m_zeta0,
+    output reg  [ANG_W-1:0]    m_dzeta,
+    output reg  [6:0]          m_flags
 );
     localparam S = ZF - ANG_FRAC;
     localparam NRUN = 24;
@@ -241,7 +249,7 @@ module spec_setup_engine #(
     wire [3:0] nbit = nbit6[3:0];
     wire zero_c = bad || nohl || (s_reg == {STR_W{1'b0}}) || ((n_reg != {N_W{1'b0}}) && !xpos);
     wire unused_bits;
-    assign unused_bits = &{1'b0, s_tdata[223:218], z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], lg_w, nterm, nbit6[5:4]};
+    assign unused_bits = &{1'b0, z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], nterm, nbit6[5:4]};
 
     always @(posedge clk) begin
         v_we <= 1'b0;
@@ -256,11 +264,11 @@ module spec_setup_engine #(
                     s_tready <= 1'b1;
                     if (s_tvalid && s_tready) begin
                         s_tready <= 1'b0;
-                        vec_in <= s_tdata[191:0];
-                        s_reg <= s_tdata[207:192];
-                        n_reg <= s_tdata[208 +: N_W];
-                        l_reg <= s_tdata[224 +: L_W];
-                        rule_reg <= s_tdata[240];
+                        vec_in <= s_vec;
+                        s_reg <= s_str;
+                        n_reg <= s_n;
+                        l_reg <= s_l;
+                        rule_reg <= s_rule;
                         bad <= 1'b0;
                         ld_v <= 3'd0;
                         ld_c <= 2'd0;
@@ -449,10 +457,12 @@ module spec_setup_engine #(
                         default: begin       // 20: wait for the divider and the output register (and stay)
                             if (dcnt == ZW[5:0] && !(m_tvalid && !m_tready)) begin
                                 m_tvalid <= 1'b1;
-                                m_tdata <= {bad || flat ? {ANG_W{1'b0}} : dzeta, bad ? {ANG_W{1'b0}} : zeta0,
-                                            {(32 - L_W) {1'b0}}, l_reg, {(16 - N_W) {1'b0}}, n_reg, {(16 - C_W) {1'b0}},
-                                            zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode};
-                                m_tuser <= bad ? {1'b1, 2'b00, l_reg == {L_W{1'b0}}, 3'b000}
+                                m_dzeta <= bad || flat ? {ANG_W{1'b0}} : dzeta;
+                                m_zeta0 <= bad ? {ANG_W{1'b0}} : zeta0;
+                                m_l <= l_reg;
+                                m_n <= n_reg;
+                                m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
+                                m_flags <= bad ? {1'b1, 2'b00, l_reg == {L_W{1'b0}}, 3'b000}
                                                : {1'b0, rule_reg, nohl, l_reg == {L_W{1'b0}}, !zero_c && sat, opp, flat};
                                 st <= ST_IDLE;
                             end else begin

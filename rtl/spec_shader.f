@@ -9,3 +9,4 @@ spec_setup_pipe.v
 spec_setup_fifo.v
 spec_setup_engine.v
 spec_setup.v
+spec_shader.v

@@ -49,9 +49,9 @@ struct SetupFormat {
         auto need = [](bool ok, const char* what) {
             if (!ok) throw std::invalid_argument(std::string("setup format: ") + what);
         };
-        need(vec_w >= 8 && vec_w <= 24, "vec_w must be 8..24");
+        need(vec_w >= 8 && vec_w <= 16, "vec_w must be 8..16 (a 16-bit slot of the span-ends beat each)");
         need(vec_frac >= 1 && vec_frac <= vec_w - 1, "vec_frac must be 1..vec_w-1");
-        need(str_w >= 4 && str_w <= 24 && str_frac >= 0 && str_frac <= str_w, "bad strength format");
+        need(str_w >= 4 && str_w <= 16 && str_frac >= 0 && str_frac <= str_w, "bad strength format (at most 16 bits)");
         need(f >= vec_w && f <= 40, "f must be vec_w..40");
         need(iters >= 8 && iters <= f + 2, "iters must be 8..f+2");
         need(zf >= 20 && zf <= 40, "zf must be 20..40");

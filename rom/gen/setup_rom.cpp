@@ -98,6 +98,13 @@ std::vector<Param> params(const SetupFormat& sf, const SetupConsts& c) {
         {"PI", c.pi, "round(pi * 2^ZF)"},
         {"TWO_PI", c.two_pi, "round(2 pi * 2^ZF)"},
         {"FLAT_Z", c.flat_z, "gamma below 2^FLAT_LOG2 rad, in angle-lane units: the span is flat"},
+        {"BEAT_W", 256, "spec_setup / spec_shader: span-ends beat width (s_axis_tdata)"},
+        {"BEAT_VEC_LSB", 0, "span ends: N1, N2, H1, H2 (x, y, z each) at [BEAT_VEC_LSB + 16 * k +: VEC_W]"},
+        {"BEAT_STR_LSB", 192, "span ends: Is*ks at [BEAT_STR_LSB +: STR_W]"},
+        {"BEAT_N_LSB", 208, "span ends: n at [BEAT_N_LSB +: N_W]"},
+        {"BEAT_L_LSB", 224, "span ends: l at [BEAT_L_LSB +: L_W]"},
+        {"BEAT_RULE_BIT", 240, "span ends: gamma rule (1: midpoint)"},
+        {"FLAGS_W", 7, "spec_setup / spec_shader: flags on tuser"},
         {"GAIN_N", static_cast<long long>(c.gain_terms.size()), "terms of the multiplication by G"},
         {"HALF_N", static_cast<long long>(c.half_terms.size()), "terms of the multiplication by G/2"},
     };
