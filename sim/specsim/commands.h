@@ -21,7 +21,8 @@ int cmd_normalize(int argc, char** argv);  // specsim normalize: companion paper
 int cmd_parallax(int argc, char** argv);   // specsim parallax: companion paper C measured (cmd_methods.cpp)
 
 int cmd_setup(int argc, char** argv);   // specsim setup: span ends through spec_setup (cmd_setup.cpp, issue 13)
-int cmd_bench_shader(int argc, char** argv);   // specsim bench-shader: spec_shader's pixels per clock (issue 13)
+int cmd_bench_shader(int argc, char** argv);
+int cmd_setup_accuracy(int argc, char** argv);   // specsim setup-accuracy: the shader against the host (issue 13)   // specsim bench-shader: spec_shader's pixels per clock (issue 13)
 
 // The usage lines of these commands, for specsim --help.
 extern const char* const kRenderUsage;
@@ -30,5 +31,6 @@ extern const char* const kTunedUsage;
 extern const char* const kMethodsUsage;
 extern const char* const kSetupUsage;
 extern const char* const kBenchShaderUsage;
+extern const char* const kSetupAccuracyUsage;
 
 }  // namespace spec
