@@ -335,11 +335,12 @@ module spec_setup_engine #(
                     endcase
                 end
                 ST_ROT: begin
-                    la <= d_now ? la + bs : la - bs;
-                    lb <= d_now ? lb - as : lb + as;
-                    lz <= d_now ? lz + $signed(atan_i) : lz - $signed(atan_i);
+                    // one adder each: the direction folded into the operand (x - y = x + ~y + 1)
+                    la <= la + (bs ^ {W{~d_now}}) + {{(W - 1) {1'b0}}, ~d_now};         // d: la + bs, else la - bs
+                    lb <= lb + (as ^ {W{d_now}}) + {{(W - 1) {1'b0}}, d_now};           // d: lb - as, else lb + as
+                    lz <= lz + (atan_i ^ {ZW{~d_now}}) + {{(ZW - 1) {1'b0}}, ~d_now};   // d: + atan, else - atan
                     if (run_role != 2'd1) drec[it] <= d_now;
-                    if (it < nterm[4:0]) acc <= tneg ? acc - term : acc + term;
+                    if (it < nterm[4:0]) acc <= acc + (term ^ {W{tneg}}) + {{(W - 1) {1'b0}}, tneg};
                     it <= it + 5'd1;
                     if (it == ITERS - 1) begin
                         st <= ST_WR;
