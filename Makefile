@@ -190,6 +190,9 @@ deps-synth:
 synth: build deps-synth
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit --configs up5k,default \
 	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
+	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
+	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --out $(BUILD)/synth --specrom $(BUILD)/specrom \
+	    --ecp5-yosys yosys
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
 fusesoc: build deps-synth
@@ -209,13 +212,13 @@ deps-formal:
 	@scripts/deps.sh z3 python3
 
 formal: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal --data docs/data/formal.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal --data docs/data/formal.json
 
 # The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
 formal-mutants: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
@@ -243,5 +246,5 @@ deps-fuzz:
 fuzz: deps deps-fuzz
 	cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DCMAKE_CXX_COMPILER=clang++ -DSPEC_FUZZ=ON \
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
-	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim))
+	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim setup specsim_setup))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)

