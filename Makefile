@@ -17,8 +17,8 @@
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
 #   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
-#   make methods  the three companion papers measured: specsim highlight, normalize, parallax (docs/methods.md),
-#               pictures in build/methods
+#   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
+#               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
 #   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
 #   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
@@ -27,6 +27,8 @@
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
+#   make test-mutants  each strengthened test against a deliberately broken copy of the tree: it must fail
+#               (tests/mutants.py, build-mutants; about 20 minutes on 2 cores the first time)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -41,7 +43,7 @@ RTL_OTHER := $(filter-out $(RTL_CORE) $(RTL_SHADER),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
         bench-render bench-shader synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
-        test-asan fuzz deps-fuzz compare tables methods
+        test-asan test-mutants fuzz deps-fuzz compare tables methods
 
 all: build
 
@@ -90,7 +92,7 @@ lint: deps
 	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_setup -GITERATIVE=1 || exit 1
 	@echo "  spec_setup with ITERATIVE = 1: clean"
 	@for f in $(RTL_OTHER); do \
-	    verilator --lint-only -Wall -Irom $$f || exit 1; \
+	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \
 	done
 	@syn/ice40_smoke.sh $(BUILD)/syn
@@ -116,7 +118,7 @@ fig8: build
 	$(BUILD)/specsim fig8
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz
+	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz $(BUILD)-mutants
 
 # Regenerate the documents made from simulation and every number marked in README.md and docs/*.md
 # (scripts/docgen.py; the ctests docs_current and docs_*timing_matches_simulation check them)
@@ -149,11 +151,21 @@ images: build
 	cp $(BUILD)/img_methods/panel_teapot-lo.png docs/img/methods_normalize.png
 	cp $(BUILD)/img_methods/parallax_bricks.png docs/img/methods_parallax.png
 
-# The companion papers (docs/methods.md): each claim measured, tables on stdout, pictures in build/methods
+# The companion papers (docs/methods.md): each claim measured; the document's tables (and README's) are
+# regenerated from the commands' --tables output (ctest methods_doc_tables compares them), plots and pictures
+# in build/methods, the document's pictures copied to docs/img
+METHODS_IMG := cull_default.png:methods_cull.png fig3.png:methods_fig3.png panel_teapot-lo.png:methods_normalize.png \
+               cost.png:methods_cost.png parallax_bricks.png:methods_parallax.png \
+               fetches_all_30.png:methods_fetches_30.png fetches_all_15.png:methods_fetches_15.png \
+               fetches_bricks_15.png:methods_fetches_bricks_15.png
 methods: build
-	$(BUILD)/specsim highlight --out-dir $(BUILD)/methods
-	$(BUILD)/specsim normalize --out-dir $(BUILD)/methods
-	$(BUILD)/specsim parallax --out-dir $(BUILD)/methods
+	@mkdir -p $(BUILD)/methods docs/img
+	$(BUILD)/specsim highlight --out-dir $(BUILD)/methods --tables $(BUILD)/methods/highlight.md
+	$(BUILD)/specsim normalize --out-dir $(BUILD)/methods --tables $(BUILD)/methods/normalize.md
+	$(BUILD)/specsim parallax --out-dir $(BUILD)/methods --tables $(BUILD)/methods/parallax.md
+	python3 scripts/methods_doc.py embed docs/methods.md README.md -- \
+	    $(BUILD)/methods/highlight.md $(BUILD)/methods/normalize.md $(BUILD)/methods/parallax.md
+	@for p in $(METHODS_IMG); do cp $(BUILD)/methods/$${p%%:*} docs/img/$${p##*:}; done
 
 # Tuned mode and other table sets (docs/tuned.md)
 compare: build
@@ -188,7 +200,8 @@ deps-synth:
 	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
 
 synth: build deps-synth
-	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit --configs up5k,default \
+	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit,parallax_iter \
+	    --configs up5k,default \
 	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
 	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
 	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --out $(BUILD)/synth --specrom $(BUILD)/specrom \
@@ -237,8 +250,13 @@ test-asan: deps
 	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
 	$(call cmake_build,$(BUILD)-asan)
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	    ctest -j$(JOBS) --output-on-failure
 	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
+
+# The strengthened tests fail on broken copies: one mutant each (tests/mutants.py, docs/verification.md)
+test-mutants: deps
+	python3 tests/mutants.py --src . --work $(BUILD)-mutants --jobs $(JOBS)
 
 deps-fuzz:
 	@scripts/deps.sh clang libclang-rt-14-dev

@@ -68,7 +68,8 @@ class Facts:
                 path = os.path.join(ROOT, "rom", "spec_params.h")
             else:
                 d = tempfile.mkdtemp(prefix="docgen_")
-                self.run([self.specrom, "--config", config, "--out", d])
+                self.run([self.specrom] + (["--mode", "tuned"] if config == "tuned" else ["--config", config]) +
+                         ["--out", d])
                 path = os.path.join(d, "spec_params.h")
             vals = {}
             for m in re.finditer(r"constexpr int (\w+) = (-?\d+);", open(path).read()):
@@ -76,14 +77,44 @@ class Facts:
             return vals
         return self.once("header." + config, make)
 
-    def render(self):
+    def render(self, mode="patent"):
+        """The default scene at 512 x 512 through the Verilated core (patent or tuned mode): the statistics JSON."""
         def make():
             d = tempfile.mkdtemp(prefix="docgen_")
             stats = os.path.join(d, "stats.json")
             self.run([self.specsim, "render", "--scene", "default", "--size", "512", "--model", "rtl", "--quiet",
-                      "--out", os.path.join(d, "r.png"), "--stats", stats])
+                      "--mode", mode, "--out", os.path.join(d, "r.png"), "--stats", stats])
             return json.load(open(stats))
-        return self.once("render", make)
+        return self.once("render." + mode, make)
+
+    def compare(self):
+        """`specsim compare`: its two tables (rel: worst relative error in the epicentre, abs: worst absolute / C),
+        rows by label; and the text."""
+        def make():
+            out = self.run([self.specsim, "compare"])
+            tables, cur = [], None
+            for line in out.splitlines():
+                if line.startswith("| BRDF range"):
+                    cur = {}
+                    tables.append(cur)
+                elif line.startswith("| ") and cur is not None:
+                    cells = [c.strip() for c in line.strip().strip("|").split("|")]
+                    cur[slug(cells[0])] = cells
+            if len(tables) != 2:
+                raise DocError("specsim compare printed %d tables, not 2" % len(tables))
+            return {"rel": tables[0], "abs": tables[1], "text": out}
+        return self.once("compare", make)
+
+    def tables_md(self):
+        """Rows of docs/tables.md (`make tables` writes it, a ctest compares it with `specsim tables --quick`)."""
+        def make():
+            rows = []
+            for line in open(os.path.join(ROOT, "docs", "tables.md"), encoding="utf-8"):
+                cells = [c.strip() for c in line.strip().strip("|").split("|")]
+                if len(cells) == 9 and cells[1] in ("patent", "tuned"):
+                    rows.append(cells)
+            return rows
+        return self.once("tables_md", make)
 
     def accuracy(self, config):
         def make():
@@ -129,6 +160,10 @@ class Facts:
             return self.header(head[4:])[parts[1]]
         if head == "render":
             return walk(self.render(), parts[1:], key)
+        if head == "render_tuned":
+            return walk(self.render("tuned"), parts[1:], key)
+        if head == "compare":   # compare.rel|abs.<row slug>.<column>: the number in that cell
+            return percent(self.compare()[parts[1]][parts[2]][int(parts[3])], key)
         if head == "data":
             return walk(self.data(parts[1]), parts[2:], key)
         if head in ("accuracy", "accuracy_up5k"):
@@ -141,6 +176,17 @@ class Facts:
         if head == "calc":   # small derived values
             return CALC[parts[1]](self)
         raise DocError("unknown fact %s" % key)
+
+
+def slug(label):
+    return re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
+
+
+def percent(cell, key):
+    m = re.match(r"\**\s*(-?[\d.]+)\s*%", cell)
+    if not m:
+        raise DocError("fact %s: '%s' is not a percentage" % (key, cell))
+    return float(m.group(1))
 
 
 def walk(obj, parts, key):
@@ -164,6 +210,10 @@ def q_below_from(f, limit):
 
 
 CALC = {
+    # how many times smaller the tuned approximation's worst epicentre error is than the patent's
+    "rom9_tuned_bits": lambda f: f.header("tuned")["SCALE_W"] + f.header("tuned")["TSEL_W"],
+    "tuned_factor": lambda f: percent(f.compare()["rel"]["all_n_0_1023"][3], "tuned_factor") /
+    percent(f.compare()["rel"]["all_n_0_1023"][5], "tuned_factor"),
     "q06_from": lambda f: q_below_from(f, 0.6),
     # pixel i of spec_unit, cycles after Start: FIRST + 2i; busy_o from t+1 to t+FIRST+2l
     "unit_busy_end_plus1": lambda f: f.header("default")["UNIT_FIRST_PIXEL"] + 1,
@@ -266,7 +316,83 @@ def block_bench_stream(f):
     return "\n".join(out)
 
 
+def block_compare_rel(f):
+    lines = f.compare()["text"].splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith("| BRDF range"))
+    out = []
+    for l in lines[start:]:
+        if not l.startswith("|"):
+            break
+        out.append(l)
+    return "\n".join(out)
+
+
+# The excerpt of docs/tables.md in README: (tables k, ROM 12 as tables.md writes it)
+TABLES_EXCERPT = [("2", "1 x 2^12 x 17"), ("1,4", "2 x 2^7 x 28 (interp.)"), ("1,2,4,16", "4 x 2^12 x 17"),
+                  ("1,2,4,16", "4 x 2^10 x 17"), ("1,2,4,16", "4 x 2^7 x 28 (interp.)"),
+                  ("1,2,4,8,16,32,64", "7 x 2^12 x 17"), ("1,2,3,4,8,16", "6 x 2^7 x 28 (interp.)")]
+
+
+def block_tables_excerpt(f):
+    rows = f.tables_md()
+    out = ["| tables k | ROM 12 | ROM kbit (patent mode / tuned mode) | patent mode | tuned mode |", "|---|---|---|---|---|"]
+    for k, rom12 in TABLES_EXCERPT:
+        pick = {r[1]: r for r in rows if r[0] == k and r[2] == rom12}
+        if set(pick) != {"patent", "tuned"}:
+            raise DocError("docs/tables.md has no rows for tables %s, ROM 12 %s" % (k, rom12))
+        p, t = pick["patent"], pick["tuned"]
+        kbit = p[4] if p[4] == t[4] else "%s / %s" % (p[4], t[4])
+        out.append("| %s | %s | %s | %s | %s |" % (k.replace(",", ", "), rom12.replace(" x ", " × "), kbit, p[6], t[6]))
+    return "\n".join(out)
+
+
+def block_formal_steps(f):
+    d = f.data("formal")
+    out = ["| job | step | result | time (s) |", "|---|---|---|---|"]
+    for r in d["steps"]:
+        what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
+        out.append("| %s | %s | %s | %.0f |" % (r["job"], what, "pass" if r["pass"] else "FAIL", r["seconds"]))
+    out.append("")
+    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (d["date"], d.get("solver")))
+    return "\n".join(out)
+
+
+def block_formal_mutants(f):
+    d = f.data("formal_mutants")
+    out = ["| job | the bug (`formal/formal.py` MUTANTS) | caught by |", "|---|---|---|"]
+    for m in d["mutants"]:
+        if m["expected"]:
+            res = "`%s`" % m["assertion"] if m.get("assertion") else "caught"
+        else:
+            res = "not caught, as it must not be (an equivalent change)"
+        out.append("| %s | %s | %s |" % (m["job"], m["bug"], res))
+    out.append("")
+    out.append("(`make formal-mutants` on %s: bounded checks of %s cycles.)" % (
+        d["date"], ", ".join("%s %d" % kv for kv in sorted(d["bmc_cycles"].items()))))
+    return "\n".join(out)
+
+
+def block_coverage(f):
+    d = f.data("coverage")
+
+    def cell(hit_tot):
+        hit, tot = hit_tot
+        return "%.1f %% (%d/%d)" % (100.0 * hit / tot, hit, tot) if tot else "no statements"
+    out = ["| RTL file | line coverage | toggle coverage |", "|---|---|---|"]
+    for name, v in sorted(d["files"].items()):
+        out.append("| `%s` | %s | %s |" % (name, cell(v["line"]), cell(v["toggle"]) if v["toggle"][1] else "-"))
+    out.append("| all | %s | %s |" % (cell(d["all"]["line"]), cell(d["all"]["toggle"])))
+    out.append("")
+    out.append("(`make coverage` on %s.)" % d["date"])
+    return "\n".join(out)
+
+
 BLOCKS = {
+    "formal-steps": block_formal_steps,
+    "formal-mutants": block_formal_mutants,
+    "coverage": block_coverage,
+    "compare-rel": block_compare_rel,
+    "tables-excerpt": block_tables_excerpt,
     "render-stats": block_render_stats,
     "accuracy": block_accuracy,
     "fig8": block_fig8,

