@@ -23,7 +23,8 @@
 #   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
 #   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
 #   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
-#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two)
+#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two),
+#                   LONG_SPANS (10^6) random and degenerate span ends through spec_setup / spec_shader
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
@@ -213,6 +214,7 @@ fusesoc: build deps-synth
 
 # ---- Verification in depth (issue 5, docs/verification.md) ---------------------------------------------------
 LONG_PIXELS ?= 100000000
+LONG_SPANS ?= 1000000
 FUZZ_TIME ?= 60
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 # g++ 12 miscompiles UBSan's null check on a thread_local's address (Verilated::t_s, inlined from verilated.h):
@@ -243,7 +245,7 @@ coverage: deps
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
-	SPEC_LONG_PIXELS=$(LONG_PIXELS) $(BUILD)/spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_SPANS=$(LONG_SPANS) $(BUILD)/spec_long
 
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
