@@ -206,7 +206,7 @@ synth: build deps-synth
 	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
 	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
 	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --out $(BUILD)/synth --specrom $(BUILD)/specrom \
-	    --ecp5-yosys yosys
+	    --ecp5-yosys yosys --data docs/data/synth_shader.json
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
 fusesoc: build deps-synth

