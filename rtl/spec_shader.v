@@ -85,10 +85,10 @@ module spec_shader #(
             fcnt <= fcnt_n;
             fspace <= fcnt_n < (1 << FLAGS_AW) - 1;
         end
-        // m_axis_tuser: the flags of the oldest span in spec_stream (the one whose pixels leave). It is loaded
-        // when a span arrives at an empty FIFO and when the oldest span's last pixel leaves; spec_stream's first
-        // pixel of a span comes many clocks after its descriptor, so the register is ready before it.
-        if (pop ? (fcnt_n != {(FLAGS_AW + 1) {1'b0}}) : (push && fcnt == {(FLAGS_AW + 1) {1'b0}})) begin
+        // m_axis_tuser: the oldest span's flags, loaded when a span arrives at an empty FIFO and when the oldest
+        // span's last pixel leaves (its first pixel comes many clocks after its descriptor); reset to 0.
+        if (rst) m_axis_tuser <= 7'd0;
+        else if (pop ? (fcnt_n != {(FLAGS_AW + 1) {1'b0}}) : (push && fcnt == {(FLAGS_AW + 1) {1'b0}})) begin
             if (pop && fcnt == {{FLAGS_AW{1'b0}}, 1'b1}) m_axis_tuser <= d_flags;   // it was the only span
             else m_axis_tuser <= pop ? fmem[fr_next] : d_flags;
         end
