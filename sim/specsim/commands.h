@@ -34,6 +34,7 @@ int cmd_setup(int argc, char** argv);           // span ends through spec_setup 
 int cmd_setup_accuracy(int argc, char** argv);  // the shader against the host per pixel (cmd_setup_accuracy.cpp)
 int cmd_bench_shader(int argc, char** argv);    // spec_shader's pixels per clock (cmd_bench_shader.cpp)
 int cmd_shader_diagram(int argc, char** argv);  // spec_shader's ports cycle by cycle (cmd_shader_diagram.cpp)
+int cmd_setup_vectors(int argc, char** argv);   // Icarus vectors for spec_shader (cmd_setup_vectors.cpp)
 
 // The usage lines, for specsim --help and COMMAND --help: each command's block starts with a line
 // "  NAME  ..." (two spaces, the name) and runs to the next such line.
@@ -50,5 +51,6 @@ extern const char* const kSetupUsage;          // cmd_setup.cpp
 extern const char* const kSetupAccuracyUsage;  // cmd_setup_accuracy.cpp
 extern const char* const kBenchShaderUsage;    // cmd_bench_shader.cpp
 extern const char* const kShaderDiagramUsage;  // cmd_shader_diagram.cpp
+extern const char* const kSetupVectorsUsage;   // cmd_setup_vectors.cpp
 
 }  // namespace spec
