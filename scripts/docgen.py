@@ -29,6 +29,8 @@ import subprocess
 import sys
 import tempfile
 
+import docgen_shader
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 INLINE = re.compile(r"<!--v:([^>|]+?)(?:\|([^>]*?))?-->(.*?)<!--/v-->", re.S)
@@ -37,8 +39,7 @@ ERROR_TEXT = re.compile(r"No such file or directory|command not found|Traceback 
                         r"^bash: |Segmentation fault|core dumped|^%Error|CMake Error|^make: \*\*\*", re.M)
 
 
-class DocError(Exception):
-    pass
+DocError = docgen_shader.DocError   # one exception type for both modules
 
 
 class Facts:
@@ -160,6 +161,8 @@ class Facts:
             return self.header(head[4:])[parts[1]]
         if head == "render":
             return walk(self.render(), parts[1:], key)
+        if head in docgen_shader.HEADS:   # spec_setup / spec_shader (issue 13): scripts/docgen_shader.py
+            return docgen_shader.get(self, head, parts, key)
         if head == "render_tuned":
             return walk(self.render("tuned"), parts[1:], key)
         if head == "compare":   # compare.rel|abs.<row slug>.<column>: the number in that cell
@@ -237,8 +240,8 @@ def block_render_stats(f):
     s = f.render()["against_ref"]
     rows = [("rtl", "rtl (= golden bit for bit)"), ("prototype", "prototype"),
             ("host", "host alone (its angles, exact cos^n)")]
-    if "shader" in s:
-        rows.insert(1, ("shader", "shader (spec_setup in RTL, then spec_stream)"))
+    s = dict(s, shader=docgen_shader.render_shader(f)["against_ref"]["shader"])
+    rows.insert(1, ("shader", "shader (`--model shader`: spec_setup in RTL too)"))
     out = ["| model | max \\|error\\| | mean \\|error\\| on objects | PSNR | pixels > 4 levels off |",
            "|---|---|---|---|---|"]
     for k, label in rows:
@@ -280,8 +283,8 @@ def block_fig11_waves(f):
     return "```\n" + "\n".join(lines) + "\n```"
 
 
-def block_synth_table(f):
-    rows = f.data("synth")
+def block_synth_table(f, name="synth"):
+    rows = f.data(name)
     if isinstance(rows, dict):
         rows = rows.get("results", [])
     hdr = "| target | top | config | LUT | FF | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | ROMs in BRAM | goal met |"
@@ -346,8 +349,8 @@ def block_tables_excerpt(f):
     return "\n".join(out)
 
 
-def block_formal_steps(f):
-    d = f.data("formal")
+def block_formal_steps(f, name="formal"):
+    d = f.data(name)
     out = ["| job | step | result | time (s) |", "|---|---|---|---|"]
     for r in d["steps"]:
         what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
@@ -357,8 +360,8 @@ def block_formal_steps(f):
     return "\n".join(out)
 
 
-def block_formal_mutants(f):
-    d = f.data("formal_mutants")
+def block_formal_mutants(f, name="formal_mutants"):
+    d = f.data(name)
     out = ["| job | the bug (`formal/formal.py` MUTANTS) | caught by |", "|---|---|---|"]
     for m in d["mutants"]:
         if m["expected"]:
@@ -387,7 +390,10 @@ def block_coverage(f):
     return "\n".join(out)
 
 
-BLOCKS = {
+BLOCKS = dict(docgen_shader.BLOCKS)
+BLOCKS.update({
+    "formal-shader": lambda f: block_formal_steps(f, "formal_shader"),
+    "formal-mutants-shader": lambda f: block_formal_mutants(f, "formal_mutants_shader"),
     "formal-steps": block_formal_steps,
     "formal-mutants": block_formal_mutants,
     "coverage": block_coverage,
@@ -399,7 +405,7 @@ BLOCKS = {
     "fig11-waves": block_fig11_waves,
     "synth-table": block_synth_table,
     "bench-stream": block_bench_stream,
-}
+})
 
 
 def process(path, facts, problems, stale):
