@@ -255,7 +255,8 @@ coverage: deps
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
-	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_SPANS=$(LONG_SPANS) $(BUILD)/spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_SPANS=$(LONG_SPANS) \
+	    SPEC_LONG_JSON=$(if $(filter 100000000,$(LONG_PIXELS)),docs/data/test_long.json) $(BUILD)/spec_long
 
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
