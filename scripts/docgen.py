@@ -284,6 +284,8 @@ class Facts:
             return open(os.path.join(ROOT, "rom", parts[1] + ".hex")).readline().strip()
         if head == "gtest":   # gtest.<Suite>.<Test>.<property>: what the test records (a number)
             return float(walk(self.gtest(parts[1] + "." + parts[2]), parts[3:], key))
+        if head == "src":   # src.<source>.<NAME>.<key>: a constant of a project script (SOURCES), e.g. synth goals
+            return walk(source_constant(parts[1], parts[2]), parts[3:], key)
         if head == "vrow":   # vrow.<Suite>.<Test>.<column>: a cell of docs/verification.md's bound-ratio rows
             name = "`%s.%s`" % (parts[1], parts[2])
             for line in open(os.path.join(ROOT, "docs", "verification.md"), encoding="utf-8"):
@@ -438,6 +440,25 @@ CALC = {
     "n3_at_right_angle_pct": lambda f: 100.0 * math.cos(math.sqrt(0.75) * math.pi / 2) ** 4,
     "perchannel_cycles_ratio": lambda f: f.render("render_perchannel")["cycles"] / f.render()["cycles"],
 }
+
+
+# Project scripts whose constants documents quote (src.* facts)
+SOURCES = {"synth": "syn/synth.py", "formal": "formal/formal.py"}
+
+
+def source_constant(source, name):
+    """A literal assigned at the top level of a project script; a list of "--flag", "value" pairs as a dict."""
+    import ast
+    if source not in SOURCES:
+        raise DocError("unknown source %s" % source)
+    tree = ast.parse(open(os.path.join(ROOT, SOURCES[source]), encoding="utf-8").read())
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and any(getattr(t, "id", None) == name for t in node.targets):
+            value = ast.literal_eval(node.value)
+            if isinstance(value, list) and value and all(isinstance(v, str) for v in value) and value[0].startswith("--"):
+                value = {value[i][2:]: value[i + 1] for i in range(0, len(value) - 1, 2)}
+            return value
+    raise DocError("%s has no constant %s" % (SOURCES[source], name))
 
 
 def span_of(values):
