@@ -16,7 +16,8 @@
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
-#   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
+#   make tables   table sets and table sizes against ROM bits, both modes: docs/img/tables.png, and docs/tables.md
+#               (scripts/docgen.py's block; the ctest docs_current reruns it)
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
 #               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
@@ -177,11 +178,14 @@ compare: build
 tables: build
 	@mkdir -p docs/img
 	$(BUILD)/specsim tables --out-dir $(BUILD)/tables
-	cp $(BUILD)/tables/tables.md docs/tables.md
 	cp $(BUILD)/tables/tables.png docs/img/tables.png
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-render: build
-	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5 --json $(BUILD)/bench/render.json
+	@mkdir -p docs/data && cp $(BUILD)/bench/render.json docs/data/bench_render.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-stream: build
 	@mkdir -p $(BUILD)/bench
