@@ -642,6 +642,9 @@ def block_coverage(f):
         return "%.1f %% (%d/%d)" % (100.0 * hit / tot, hit, tot) if tot else "no statements"
     out = ["| RTL file | line coverage | toggle coverage |", "|---|---|---|"]
     for name, v in sorted(d["files"].items()):
+        if not v["line"][1] and not v["toggle"][1]:
+            out.append("| `%s` | no logic (elaboration-time checks) | - |" % name)
+            continue
         out.append("| `%s` | %s | %s |" % (name, cell(v["line"]), cell(v["toggle"]) if v["toggle"][1] else "-"))
     out.append("| all | %s | %s |" % (cell(d["all"]["line"]), cell(d["all"]["toggle"])))
     out.append("")
