@@ -34,18 +34,8 @@ using namespace spec;
 using spec::test::random_stream_span;
 
 namespace {
-uint64_t env_u64(const char* name, uint64_t dflt) {
-    const char* v = std::getenv(name);
-    if (!v || !*v) return dflt;
-    try {
-        return static_cast<uint64_t>(parse_int(name, v, 0, std::numeric_limits<long long>::max()));
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "spec_long: %s\n", e.what());
-        std::exit(2);
-    }
-}
-const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
-const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
+const uint64_t kPixels = spec::test::env_u64("SPEC_LONG_PIXELS", 10000000);
+const uint64_t kSeed = spec::test::env_u64("SPEC_LONG_SEED", 1);
 
 
 // What each run checked, for SPEC_LONG_JSON (make test-long writes docs/data/test_long.json, the table of

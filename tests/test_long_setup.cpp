@@ -19,24 +19,15 @@
 #include "Vspec_shader.h"
 #include "Vspec_shader_small.h"
 #include "cli.h"
+#include "common.h"
 #include "setup_driver.h"
 #include "setup_eval.h"
 
 using namespace spec;
 
 namespace {
-uint64_t env_u64(const char* name, uint64_t dflt) {
-    const char* v = std::getenv(name);
-    if (!v || !*v) return dflt;
-    try {
-        return static_cast<uint64_t>(parse_int(name, v, 0, std::numeric_limits<long long>::max()));
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "spec_long: %s\n", e.what());
-        std::exit(2);
-    }
-}
-const uint64_t kSpans = env_u64("SPEC_LONG_SPANS", 1000000);
-const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
+const uint64_t kSpans = spec::test::env_u64("SPEC_LONG_SPANS", 1000000);
+const uint64_t kSeed = spec::test::env_u64("SPEC_LONG_SEED", 1);
 
 // A quarter raw bit patterns, the rest span ends of every kind with n 0..1023 and either gamma rule.
 SetupInput long_input(std::mt19937_64& rng, const SetupFormat& sf, uint32_t max_len) {
