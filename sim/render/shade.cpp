@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -23,15 +24,17 @@ const char* model_name(SpecModel m) {
         case SpecModel::ref: return "ref";
         case SpecModel::prototype: return "prototype";
         case SpecModel::host: return "host";
+        case SpecModel::shader: return "shader";
     }
     return "?";
 }
 
 SpecModel parse_model(const std::string& s) {
-    for (SpecModel m : {SpecModel::rtl, SpecModel::golden, SpecModel::ref, SpecModel::prototype, SpecModel::host}) {
+    for (SpecModel m : {SpecModel::rtl, SpecModel::golden, SpecModel::ref, SpecModel::prototype, SpecModel::host,
+                        SpecModel::shader}) {
         if (s == model_name(m)) return m;
     }
-    throw InputError("--model: '" + s + "' is not one of rtl, golden, ref, prototype, host");
+    throw InputError("--model: '" + s + "' is not one of rtl, golden, ref, prototype, host, shader");
 }
 
 double prototype_brdf(unsigned n, double zeta) {
@@ -90,6 +93,7 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, SpanCor
     const Model core(fmt);
     ModelCore golden(core);
     if (model == SpecModel::rtl && !drv) throw std::invalid_argument("shade_specular: the rtl model needs a SpanCore");
+    if (model == SpecModel::shader) throw std::invalid_argument("shade_specular: the shader model needs a SpanEndsCore");
     if (model == SpecModel::golden && !drv) drv = &golden;
     if (model != SpecModel::rtl && model != SpecModel::golden) drv = nullptr;
     const uint64_t cycle0 = drv ? drv->cycle() : 0;
@@ -142,6 +146,7 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, SpanCor
                 case SpecModel::host:
                     for (uint32_t i = 0; i <= sp.l; ++i) val[i] = s.value(i);
                     break;
+                case SpecModel::shader: break;   // refused above
             }
             for (uint32_t i = 0; i <= sp.l; ++i) {
                 if (!f.visible(sp, i)) continue;

@@ -18,6 +18,7 @@
 #include "image.h"
 #include "raster.h"
 #include "span_core.h"
+#include "span_ends_core.h"
 #include "span_host.h"
 
 namespace spec {
@@ -29,6 +30,8 @@ enum class SpecModel {
     ref,        // double precision, exact Blinn-Phong for the interpolated vectors (per pixel slerp of N, H)
     prototype,  // Abbas, Szirmay-Kalos, Horvath: C cos^2(sqrt(n/2) zeta), 0 past pi/2, in double
     host,       // the host's angles with exact cos^n in double: the host's own share of the error
+    shader,     // a core that does the setup itself (SpanEndsCore: the Verilated spec_shader, sim/setup): the
+                // span's end vectors in, setup and core in the RTL
 };
 const char* model_name(SpecModel m);
 // Throws InputError for an unknown name.
@@ -69,6 +72,14 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel m, SpanCore* c
 SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel m, RgbMode rgb,
                        host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
                        Mode mode = Mode::patent);
+
+// SpecModel::shader: the specular term of every span through a core that takes the span's ends (spec_shader),
+// in batches of `batch` spans streamed back to back; nothing per span is computed here beyond what the
+// rasterizer interpolated. The counters count the core's flags; core_cycles are its clock cycles.
+// RgbMode::per_channel runs every span three times with the strength times each channel's tint (shade_ends.cpp).
+SpecRun shade_specular(const Scene& sc, const Frame& f, SpanEndsCore& core, RgbMode rgb,
+                       host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
+                       size_t batch = 4096);
 
 // base + spec, clamped to [0, 1], rounded to 8 bits.
 Image compose(const Shading& s, const SpecRun& r);

@@ -9,6 +9,7 @@
 
 #include "highlight.h"
 #include "scene.h"
+#include "setup_rtl.h"
 #include "shade.h"
 #include "span_core.h"
 #include "stats.h"
@@ -25,6 +26,7 @@ struct RenderOptions {
     double amp = 16;
     int progress = -1;  // -1: when stderr is a terminal
     bool cull = false;  // --cull-specular
+    SetupConfig shader_config = SetupConfig::pipelined;   // --shader-config (--model shader, docs/setup.md)
     // overrides of the scene's light, material and camera
     bool has_light_dir = false, has_light_color = false, has_intensity = false, has_ambient = false;
     render::dvec3 light_dir, light_color, ambient;
@@ -62,9 +64,13 @@ struct RenderResult {
 };
 // What runs the spans of the rtl model: a core of the given mode (the Verilated spec_unit in specsim).
 using CoreFactory = std::function<std::unique_ptr<SpanCore>(Mode)>;
-// progress_for(model): the progress callback of that model's specular pass (empty: none).
+// What runs the spans of the shader model: a core that takes span ends (the Verilated spec_shader in specsim).
+using ShaderFactory = std::function<std::unique_ptr<SpanEndsCore>(SetupConfig)>;
+// progress_for(model): the progress callback of that model's specular pass (empty: none). make_shader is
+// needed only for --model shader (std::invalid_argument without).
 RenderResult render_compute(const RenderOptions& o, const render::Scene& sc, const CoreFactory& make_core,
-                            const std::function<render::Progress(render::SpecModel)>& progress_for = {});
+                            const std::function<render::Progress(render::SpecModel)>& progress_for = {},
+                            const ShaderFactory& make_shader = {});
 
 // The statistics JSON (--stats) of a computed render.
 std::string render_stats_json(const RenderOptions& o, const render::Scene& sc, const RenderResult& r);

@@ -31,6 +31,12 @@ int cmd_highlight(int argc, char** argv);  // companion paper A measured (cmd_hi
 int cmd_normalize(int argc, char** argv);  // companion paper B measured (cmd_normalize.cpp, report_normalize.cpp)
 int cmd_parallax(int argc, char** argv);   // companion paper C measured (cmd_parallax.cpp, report_parallax.cpp)
 
+int cmd_setup(int argc, char** argv);           // span ends through spec_setup (cmd_setup.cpp, issue 13)
+int cmd_setup_accuracy(int argc, char** argv);  // the shader against the host per pixel (cmd_setup_accuracy.cpp)
+int cmd_bench_shader(int argc, char** argv);    // spec_shader's pixels per clock (cmd_bench_shader.cpp)
+int cmd_shader_diagram(int argc, char** argv);  // spec_shader's ports cycle by cycle (cmd_shader_diagram.cpp)
+int cmd_setup_vectors(int argc, char** argv);   // Icarus vectors for spec_shader (cmd_setup_vectors.cpp)
+
 // The usage lines, for specsim --help and COMMAND --help: each command's block starts with a line
 // "  NAME  ..." (two spaces, the name) and runs to the next such line.
 extern const char* const kSpanUsage;      // cmd_span.cpp
@@ -43,5 +49,10 @@ extern const char* const kBenchUsage;     // stream-diagram, bench-stream
 extern const char* const kBenchLanesUsage;  // bench-lanes (cmd_bench_lanes.cpp)
 extern const char* const kTunedUsage;     // compare, tables
 extern const char* const kMethodsUsage;   // highlight, normalize, parallax (methods_usage.cpp)
+extern const char* const kSetupUsage;          // cmd_setup.cpp
+extern const char* const kSetupAccuracyUsage;  // cmd_setup_accuracy.cpp
+extern const char* const kBenchShaderUsage;    // cmd_bench_shader.cpp
+extern const char* const kShaderDiagramUsage;  // cmd_shader_diagram.cpp
+extern const char* const kSetupVectorsUsage;   // cmd_setup_vectors.cpp
 
 }  // namespace spec

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "cmd_render.h"
 
@@ -18,7 +19,8 @@ const ModelResult* RenderResult::find(render::SpecModel m) const {
 }
 
 RenderResult render_compute(const RenderOptions& ra, const render::Scene& sc, const CoreFactory& make_core,
-                            const std::function<render::Progress(render::SpecModel)>& progress_for) {
+                            const std::function<render::Progress(render::SpecModel)>& progress_for,
+                            const ShaderFactory& make_shader) {
     RenderResult res;
     const auto t0 = std::chrono::steady_clock::now();
     res.frame = render::rasterize(sc, ra.size, ra.size);
@@ -48,10 +50,16 @@ RenderResult render_compute(const RenderOptions& ra, const render::Scene& sc, co
         ModelResult r;
         r.model = m;
         const render::Frame& spec_frame = ra.cull && m == ra.model ? culled : res.frame;
-        std::unique_ptr<SpanCore> core;
-        if (m == render::SpecModel::rtl) core = make_core(ra.mode);
-        r.run = render::shade_specular(sc, spec_frame, m, core.get(), ra.rgb, ra.gamma,
-                                       progress_for ? progress_for(m) : render::Progress(), ra.mode);
+        const render::Progress prog = progress_for ? progress_for(m) : render::Progress();
+        if (m == render::SpecModel::shader) {
+            if (!make_shader) throw std::invalid_argument("render_compute: the shader model needs a ShaderFactory");
+            const std::unique_ptr<SpanEndsCore> shader = make_shader(ra.shader_config);
+            r.run = render::shade_specular(sc, spec_frame, *shader, ra.rgb, ra.gamma, prog);
+        } else {
+            std::unique_ptr<SpanCore> core;
+            if (m == render::SpecModel::rtl) core = make_core(ra.mode);
+            r.run = render::shade_specular(sc, spec_frame, m, core.get(), ra.rgb, ra.gamma, prog, ra.mode);
+        }
         r.img = render::compose(res.base, r.run);
         res.results.push_back(std::move(r));
     }

@@ -16,7 +16,9 @@ const char* const kRenderUsage =
     "           --size N       image N x N pixels, 16..4096 (default 512)\n"
     "           --model M      rtl (Verilated spec_unit, default) | golden (bit-exact model) |\n"
     "                          ref (double, exact Blinn-Phong for the interpolated vectors) |\n"
-    "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n)\n"
+    "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n) |\n"
+    "                          shader (Verilated spec_shader: span ends in, setup and core in RTL; docs/setup.md)\n"
+    "           --shader-config C  pipelined (default) | small: the shader's configuration (--model shader)\n"
     "           --mode M       patent (default) | tuned: ROM 9 of the rtl and golden models (docs/tuned.md)\n"
     "           --out FILE     the rendered PNG (required)\n"
     "           --panel FILE   also render ref and prototype: PNG of ref | model | prototype | error maps\n"
@@ -37,7 +39,8 @@ const char* const kRenderUsage =
     "                     the model; default for an OBJ 0,0.35,1)  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z\n"
     "                     --fov DEGREES (vertical)\n"
     "  render-bench  speed of the render: host spans/s, golden and rtl pixels/s (medians, ratios)\n"
-    "           --size N (default 256)  --runs R (3..15, default 5)  --scene NAME\n"
+    "           --size N (default 512)  --runs R (3..15, default 5)  --scene NAME\n"
+    "           --json FILE (also write the figures as JSON: medians and ranges of the runs)\n"
     "  plots    the patent's Fig. 5 and Fig. 9 redrawn (gnuplot): --out-dir DIR (fig5.png, fig9.png, .dat)\n"
     "  export-obj  a built-in scene's meshes as one OBJ file: --scene NAME --out FILE.obj\n";
 
@@ -68,6 +71,13 @@ RenderOptions parse_render(int argc, char** argv) {
         else if (f == "--obj") r.obj = a.value(f);
         else if (f == "--size") r.size = int(parse_int(f, a.value(f), 16, 4096));
         else if (f == "--model") r.model = render::parse_model(a.value(f));
+        else if (f == "--shader-config") {
+            try {
+                r.shader_config = parse_setup_config(a.value(f));
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(std::string("--shader-config: ") + e.what());
+            }
+        }
         else if (f == "--mode") {
             const std::string m = a.value(f);
             if (m == "patent") r.mode = Mode::patent;

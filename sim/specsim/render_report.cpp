@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "fileutil.h"
 #include "image.h"
+#include "setup_render.h"
 #include "unit_driver.h"
 
 namespace spec {
@@ -79,7 +80,7 @@ void print_summary(const RenderOptions& ra, const render::Scene& sc, const Rende
     std::printf("%s%s: %llu pixels through the model in %.2f s (%.3g pixels/s)", render::model_name(main.model),
                 ra.mode == Mode::tuned ? " (tuned mode)" : "", (unsigned long long)main.run.core_pixels,
                 main.run.seconds, double(main.run.core_pixels) / std::max(1e-9, main.run.seconds));
-    if (main.model == render::SpecModel::rtl) std::printf(", %llu clock cycles", (unsigned long long)main.run.core_cycles);
+    if (main.model == render::SpecModel::rtl || main.model == render::SpecModel::shader) std::printf(", %llu clock cycles", (unsigned long long)main.run.core_cycles);
     std::printf("; rasterization and diffuse %.2f s\n", res.t_raster);
     if (!res.compared) return;
     std::printf("\nagainst ref (levels of 255; mean over object pixels; PSNR over the image):\n");
@@ -106,7 +107,9 @@ void write_panel(const RenderOptions& ra, const render::Scene& sc, const RenderR
     const std::string mname = std::string(render::model_name(ra.model)) + (ra.mode == Mode::tuned ? " (tuned)" : "");
     std::vector<render::Tile> tiles{
         {&ref, "ref", "double precision"},
-        {&pm->img, mname, ra.model == render::SpecModel::rtl ? "Verilated spec_unit" : ""},
+        {&pm->img, mname, ra.model == render::SpecModel::rtl      ? "Verilated spec_unit"
+                          : ra.model == render::SpecModel::shader ? "Verilated spec_shader"
+                                                                  : ""},
         {&pp->img, "prototype", "cos^2(sqrt(n/2) d)"},
         {&em, "error of " + mname + " x" + amp, "max " + std::to_string(pm->st.max_abs) + " levels of 255"},
         {&ep, "error of prototype x" + amp, "max " + std::to_string(pp->st.max_abs) + " levels of 255"},
@@ -131,7 +134,8 @@ int cmd_render(int argc, char** argv) {
             bars.emplace_back(new ProgressBar(true, render::model_name(m)));
             ProgressBar* pb = bars.back().get();
             return [pb](size_t d, size_t t) { (*pb)(d, t); };
-        });
+        },
+        [](SetupConfig c) { return make_shader_core(c); });
     print_summary(ra, sc, res);
     render::write_png(ra.out, res.results.front().img);
     if (!ra.panel.empty()) write_panel(ra, sc, res);
