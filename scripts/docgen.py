@@ -458,6 +458,8 @@ def source_constant(source, name):
     for node in tree.body:
         if isinstance(node, ast.Assign) and any(getattr(t, "id", None) == name for t in node.targets):
             value = ast.literal_eval(node.value)
+            if isinstance(value, dict):   # tuple keys (e.g. synth.py's GOALS by target and LANES) as "a:b"
+                value = {":".join(map(str, k)) if isinstance(k, tuple) else k: v for k, v in value.items()}
             if isinstance(value, list) and value and all(isinstance(v, str) for v in value) and value[0].startswith("--"):
                 value = {value[i][2:]: value[i + 1] for i in range(0, len(value) - 1, 2)}
             return value
