@@ -630,7 +630,9 @@ def block_formal_steps(f, name="formal"):
         what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
         out.append("| %s | %s | %s | %.0f |" % (r["job"], what, "pass" if r["pass"] else "FAIL", r["seconds"]))
     out.append("")
-    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (d["date"], d.get("solver")))
+    dates = sorted(set(r.get("date", d["date"]) for r in d["steps"]))
+    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (
+        " and ".join(dates), d.get("solver")))
     return "\n".join(out)
 
 
