@@ -23,6 +23,7 @@ module spec_datapath #(
                            //    3 with INTERP = 1)
     parameter CTRL = 1,    // 0: no valid/last pipeline (out_valid, out_last, busy = 0; the output register
                            //    loads with every ce): the caller tracks its pixels (spec_stream)
+    parameter DELAY_RAM = 0,   // 1: C's delay beside multiplier 11 and ROM 12 in block RAM (spec_delay RAM)
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,
@@ -119,7 +120,7 @@ module spec_datapath #(
 
     // multiplier 13 (three stages) -> output 27
     wire [C_W-1:0] c_m;
-    spec_delay #(.W(C_W), .N(VS)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
+    spec_delay #(.W(C_W), .N(VS), .RAM(DELAY_RAM)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
     spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W), .DSP_FF(P)) u_mul13 (
         .clk(clk), .rst(rst), .ce(ce), .en(out_en), .c(c_m), .value(value_m), .zero(zero_m),
         .out(out)
