@@ -110,6 +110,7 @@ class Packer:
         self.d_port = "DI" if family == "ecp5" else "D"
         self.removed = set()   # flip-flops now inside a block (their outputs drive nothing else)
         self.copied = set()    # flip-flops copied into blocks' input registers (removed if nothing else uses them)
+        self.private = {}      # (DSP block, net) -> that block's own inverter of the net (iCE40 holds)
         self.log = []
 
     def input_ffs(self, bits):
@@ -273,28 +274,51 @@ class Packer:
             con[grp] = bits
             par["%s_REG" % grp] = "1"
             if en != "1":
-                self.port(c, "%sHOLD" % grp, self.inverter(en))
+                self.port(c, "%sHOLD" % grp, self.inverter(name, en))
             self.log.append("%s: input %s register (%d flip-flops)" % (name, grp, len(ffs)))
 
-    def inverter(self, net):
-        """A net carrying ~net: an existing SB_LUT4 inverter of it, or a new one."""
-        for name, c in self.nl.cells.items():
-            if c["type"] != "SB_LUT4" or name in self.removed:
-                continue
-            con = c["connections"]
-            ins = [con.get("I%d" % k, ["0"])[0] for k in range(4)]
-            if ins[0] == net and all(b == "0" for b in ins[1:]):
-                init = str(c["parameters"].get("LUT_INIT", ""))
-                if init and int(init, 2) & 3 == 1:
-                    return con["O"][0]
+    def inverted(self, b):
+        """x when net b comes from an SB_LUT4 that computes ~x of one net x (its other inputs constant)."""
+        drv = self.nl.driver.get(b)
+        if drv is None or drv[1] != "O" or self.nl.cells[drv[0]]["type"] != "SB_LUT4":
+            return None
+        c = self.nl.cells[drv[0]]
+        ins = [c["connections"].get("I%d" % k, ["0"])[0] for k in range(4)]
+        nets = [k for k, x in enumerate(ins) if not is_const(x)]
+        if len(nets) != 1 or any(x not in ("0", "1") for k, x in enumerate(ins) if k != nets[0]):
+            return None
+        init = str(c["parameters"].get("LUT_INIT", "0"))
+        init = int(init, 2) if set(init) <= set("01") else int(init)
+        idx = [sum((1 << k) for k, x in enumerate(ins) if x == "1"), 0]
+        idx[1] = idx[0] | (1 << nets[0])
+        return ins[nets[0]] if ((init >> idx[0]) & 1, (init >> idx[1]) & 1) == (1, 0) else None
+
+    def inverter(self, mac, net):
+        """A net carrying ~net for this DSP block alone: each block gets its own inverter LUT (Yosys shares one
+        between the blocks, which sit at both edges of the chip, so the shared one ends up far from all)."""
+        key = (mac, net)
+        if key in self.private:
+            return self.private[key]
         new = max(b for cc in self.nl.cells.values() for bb in cc["connections"].values() for b in bb
                   if not is_const(b)) + 1
-        self.nl.cells["$dsp_pack$inv%d" % new] = {
+        name = "$dsp_pack$inv%d" % new
+        self.nl.cells[name] = {
             "hide_name": 1, "type": "SB_LUT4", "parameters": {"LUT_INIT": "0000000000000001"}, "attributes": {},
             "port_directions": {"I0": "input", "I1": "input", "I2": "input", "I3": "input", "O": "output"},
             "connections": {"I0": [net], "I1": ["0"], "I2": ["0"], "I3": ["0"], "O": [new]}}
-        self.nl.driver[new] = ("$dsp_pack$inv%d" % new, "O", 0)
+        self.nl.driver[new] = (name, "O", 0)
+        self.private[key] = new
         return new
+
+    def private_holds(self, name, c):
+        """The block's hold inputs from inverter LUTs of its own."""
+        for p in ("AHOLD", "BHOLD", "CHOLD", "DHOLD", "OHOLDTOP", "OHOLDBOT"):
+            b = c["connections"].get(p, ["0"])[0]
+            if is_const(b):
+                continue
+            x = self.inverted(b)
+            if x is not None:
+                c["connections"][p] = [self.inverter(name, x)]
 
     @staticmethod
     def port(c, p, b):
@@ -312,6 +336,7 @@ class Packer:
                 self.mult18(name, c)
             elif self.family == "ice40" and c["type"] == "SB_MAC16":
                 self.mac16(name, c)
+                self.private_holds(name, c)
         for f in self.removed:
             del self.nl.cells[f]
         # copied flip-flops that feed nothing now
@@ -327,6 +352,11 @@ class Packer:
             q = self.nl.cells[f]["connections"]["Q"][0]
             if q not in used and q not in self.nl.kept:
                 del self.nl.cells[f]
+        # inverters that the blocks' private ones replaced and that now drive nothing
+        for name in [n for n, c in self.nl.cells.items() if c["type"] == "SB_LUT4"]:
+            o = self.nl.cells[name]["connections"]["O"][0]
+            if not is_const(o) and o not in used and o not in self.nl.kept:
+                del self.nl.cells[name]
         return self.log
 
 
