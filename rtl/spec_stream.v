@@ -26,7 +26,7 @@
 // boundaries: the next descriptors wait in a three-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first beat in cycle
 // a + 4 + ACC + LAT = a + `SPEC_STREAM_LATENCY: buffer and span generator (spec_spangen, 3), accumulator
-// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 17 with INTERP = 1), output
+// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 18 with INTERP = 1), output
 // register. Backpressure: every pipeline stage advances only when the output register's skid buffer is
 // empty (a register: no combinational path from m_axis_tready); m_axis_tvalid, m_axis_tdata, m_axis_tkeep and
 // m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too: 1 while the descriptor
@@ -141,7 +141,7 @@ module spec_stream #(
     // ---- the slots' flags (valid, last), from the beat to the output: NC stages of ce ------------------------
     localparam SEG = 12;
     localparam ACC = (ANG_W + L_W + SEG - 1) / SEG + 4;            // spec_saccum's stages
-    localparam LAT = 14 + ((INTERP != 0) ? 3 : 0);                  // spec_datapath's stages (PIPE = 1)
+    localparam LAT = 14 + ((INTERP != 0) ? 4 : 0);                  // spec_datapath's stages (PIPE = 1)
     localparam NC = ACC + LAT;
     reg [NC*LANES-1:0] ctl_v, ctl_l;    // stage k (1 .. NC) of slot j at [(k-1)*LANES + j]
     always @(posedge clk) begin

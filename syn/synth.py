@@ -250,8 +250,20 @@ def one(target, top, config, lanes, args, tools):
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
     res = {"target": target, "top": top, "config": config, "lanes": lanes}
+    if target in ("ice40-up5k", "ecp5-25f"):
+        # registers into the DSP blocks and block RAMs where Yosys leaves them outside (syn/dsp_pack.py)
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), json_net, "--family",
+                     "ice40" if target == "ice40-up5k" else "ecp5"], os.path.join(out, name + ".dsp_pack.log"))
+        if rc != 0:
+            fail("dsp_pack failed for %s (see %s)" % (name, os.path.join(out, name + ".dsp_pack.log")))
+        res["dsp_pack"] = [l.split(": ", 1)[1] for l in open(os.path.join(out, name + ".dsp_pack.log"))
+                           if l.startswith("dsp_pack: g")]
     for k, pats in CELLS[target].items():
         res[k] = count_cells(stat_text, pats)
+    if "dsp_pack" in res:   # the flip-flops left in the fabric after dsp_pack
+        top_mod = [m for m in json.load(open(json_net))["modules"].values() if m.get("attributes", {}).get("top")]
+        res["ff"] = sum(1 for m in top_mod for c in m["cells"].values()
+                        if any(re.fullmatch(p, c["type"]) for p in CELLS[target]["ff"]))
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
     res["goal_mhz"] = (GOALS.get((target, lanes)) if top == "spec_stream" else
