@@ -45,16 +45,15 @@ module spec_setup_engine #(
     input  wire [N_W-1:0]      s_n,
     input  wire [L_W-1:0]      s_l,
     input  wire                s_rule,
-    output reg                 m_tvalid,
+    output wire                m_tvalid,
     input  wire                m_tready,
-    output reg  [C_W-1:0]      m_c,
-    output reg  [N_W-1:0]      m_n,
-    output reg  [L_W-1:0]      m_l,
-    output reg  [ANG_W-1:0]    m_zeta0,
-    output reg  [ANG_W-1:0]    m_dzeta,
-    output reg  [6:0]          m_flags
+    output wire [C_W-1:0]      m_c,
+    output wire [N_W-1:0]      m_n,
+    output wire [L_W-1:0]      m_l,
+    output wire [ANG_W-1:0]    m_zeta0,
+    output wire [ANG_W-1:0]    m_dzeta,
+    output wire [6:0]          m_flags
 );
-    localparam S = ZF - ANG_FRAC;
     localparam NRUN = 24;
     localparam [ITERS*ZW-1:0] ATAN = `SETUP_ATAN;
     localparam [8*`SETUP_GAIN_N-1:0] GSH = `SETUP_GAIN_SHIFT;
@@ -62,9 +61,6 @@ module spec_setup_engine #(
     localparam [8*`SETUP_HALF_N-1:0] HSH = `SETUP_HALF_SHIFT;
     localparam [`SETUP_HALF_N-1:0] HNEG = `SETUP_HALF_NEG;
     localparam signed [ZW-1:0] HALF_PI = `SETUP_HALF_PI;
-    localparam signed [ZW-1:0] PI_Z = `SETUP_PI;
-    localparam signed [ZW-1:0] TWO_PI = `SETUP_TWO_PI;
-    localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
     localparam [W-1:0] U = `SETUP_N1_START;
     localparam [W-1:0] TAU = `SETUP_OPP_TAU;
 
@@ -123,8 +119,8 @@ module spec_setup_engine #(
     reg [N_W-1:0] n_reg;
     reg [L_W-1:0] l_reg;
     reg rule_reg, bad, exact_opp, opp;
-    reg signed [ZW-1:0] gam, lam;
-    reg [W-1:0] mag, c1;
+    reg signed [ZW-1:0] gam;
+    reg signed [W-1:0] c1;
 
     // the vectors into the vector memory, one component a clock: the input vectors are shifted out of vec_in,
     // every component shifted left by its vector's common amount (SetupModel::prescale) in one shifter; then
@@ -208,84 +204,21 @@ module spec_setup_engine #(
     wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
     wire [ZW-1:0] atan_i = atab[it];
 
-    // ---- table lookups with interpolation: log2 (TB + RB bits of position) and exp2 -----------------------------
-    reg [TB-1:0] tab_a;
-    wire [LF-1:0] lg_w;
-    wire [EF:0] ex_w;
-    spec_rom #(.AW(TB), .DW(LF), .INIT_FILE(LOG2_FILE)) u_log2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(lg_w));
-    spec_rom #(.AW(TB), .DW(EF + 1), .INIT_FILE(EXP2_FILE)) u_exp2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(ex_w));
-    reg [EF:0] w0;                        // the first word of a lookup
-    reg [RB-1:0] tr;                      // position between the words
-    reg [EF:0] tdiff;
-    wire [EF+RB:0] tprod = tdiff * tr;    // the interpolation product (a DSP)
-    localparam [EF+RB:0] HALF_R = 1 << (RB - 1);
-    wire [EF+RB:0] tprod_r = tprod + HALF_R;
-    wire unused_tprod;
-    assign unused_tprod = &{1'b0, tprod_r[RB-1:0]};
-
-    // log2 operand: leading one and the bits below it
-    // the operand is normalized by shifting it left one bit a clock until its leading one is at the top (lg_e
-    // counts down from its position F + 1); then the TB + RB bits below it are the table index and position
-    reg [F+1:0] lgx;
-    reg [5:0] lg_e;
-    wire [TB-1:0] lg_j = lgx[F -: TB];
-    wire [RB-1:0] lg_r = lgx[F-TB -: RB];
-    wire unused_lgx;
-    assign unused_lgx = &{1'b0, lgx[F-TB-RB:0]};
-
-    // ---- back end registers ------------------------------------------------------------------------------------
-    reg flat, nohl, xpos, sat;
-    reg [LF+5:0] lx, ls;                  // log2 of A's operand, log2 of the strength
-    reg [LF+N_W+5:0] nla, la_sh;          // n * la_v (shift and add: la_v doubled a clock)
-    localparam PW = LF + N_W + 8;
-    reg signed [PW-1:0] pv;
-    reg signed [ZW-1:0] z0;
-    reg [ANG_W-1:0] zeta0, dzeta;
-    reg [C_W-1:0] ccode;
-    // divider
-    localparam DW = L_W + S;
-    reg [DW-1:0] drem, dden;
-    reg [ZW-1:0] dnq;                     // numerator bits left above the quotient bits made
-    reg [5:0] dcnt;
-    wire [DW:0] dsh = {drem, dnq[ZW-1]};
-    wire dge = dsh >= {1'b0, dden};
-    wire [DW:0] ddif = dsh - {1'b0, dden};
-    wire unused_ddif = ddif[DW];
-    wire [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
-
     // ---- control ----------------------------------------------------------------------------------------------------
-    localparam ST_IDLE = 5'd0, ST_LOAD = 5'd1, ST_RD = 5'd2, ST_ROT = 5'd3, ST_WR = 5'd4, ST_BE = 5'd5,
-               ST_LG = 5'd6, ST_EX = 5'd7;
-    reg [4:0] st;
+    localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
+    reg [2:0] st;
     reg [3:0] ph;                         // phase within a state
-    reg [5:0] bs_step;                    // back end step
-
-    wire signed [ZW-1:0] mid = z0 + (gam >>> 1);
-    wire signed [ZW-1:0] z0r = (z0 + (1 <<< (S - 1))) >>> S;
-    wire [ZW-1:0] gnum = {1'b0, gam[ZW-2:0]} + ({{(ZW - L_W) {1'b0}}, l_reg} << (S - 1));
-    localparam [LF+6:0] OFF = F << LF;
-    localparam [LF+6:0] OFF_FLAT = (F << LF) - `SETUP_LOG2_GAIN;
-    localparam [LF+6:0] LA_MAX = 31 << LF;
-    wire signed [LF+7:0] la_raw = $signed({1'b0, flat ? OFF_FLAT : OFF}) - $signed({2'b00, lx});
-    wire signed [LF+7:0] lis = $signed({2'b00, ls}) - $signed(STR_FRAC << LF);
-    wire [PW-LF-1:0] p_i = pv[PW-1:LF];
-    wire [5:0] p_sh1 = EF - C_W - 1 + {1'b0, p_i[4:0]};
-    wire [W-1:0] p_inc = as + 1'b1;
-    wire [W-2:0] p_round = p_inc[W-1:1];
-    wire [5:0] nbit6 = bs_step - 6'd7;   // steps 7..16: bit nbit of n
-    wire [3:0] nbit = nbit6[3:0];
-    wire zero_c = bad || nohl || (s_reg == {STR_W{1'b0}}) || ((n_reg != {N_W{1'b0}}) && !xpos);
-    wire unused_bits;
-    assign unused_bits = &{1'b0, z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], nbit6[5:4], p_sh1[5], p_inc[0]};
+    reg be_start;                         // the back end starts (one clock)
+    wire be_done;
+    wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
 
     always @(posedge clk) begin
         v_we <= 1'b0;
+        be_start <= 1'b0;
         if (rst) begin
             st <= ST_IDLE;
             s_tready <= 1'b0;
-            m_tvalid <= 1'b0;
         end else begin
-            if (m_tvalid && m_tready) m_tvalid <= 1'b0;
             case (st)
                 ST_IDLE: begin
                     s_tready <= 1'b1;
@@ -325,7 +258,7 @@ module spec_setup_engine #(
                                 run <= 5'd0;
                                 ph <= 4'd0;
                                 st <= bad ? ST_BE : ST_RD;
-                                bs_step <= 6'd0;
+                                be_start <= bad;
                             end
                         end else begin
                             ld_c <= ld_c + 2'd1;
@@ -417,152 +350,33 @@ module spec_setup_engine #(
                         if (run == 5'd10) opp <= exact_opp || (acc[W-1] && ($signed(rho2k) < -$signed({{10{acc[W-1]}}, acc})));
                         if (run == 5'd21) c1 <= acc;
                         if (run == 5'd22) gam <= lz;
-                        if (run == 5'd23) begin
-                            lam <= lz;
-                            mag <= la;
-                        end
                     end
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
                         if (run == NRUN - 1) begin
                             st <= ST_BE;
-                            bs_step <= 6'd0;
+                            be_start <= 1'b1;
                         end else begin
                             run <= run + 5'd1;
                             st <= ST_RD;
                         end
                     end
                 end
-                // the back end (SetupModel::run after the angles)
-                ST_BE: begin
-                    bs_step <= bs_step + 6'd1;
-                    case (bs_step)
-                        6'd0: begin
-                            flat <= (l_reg == {L_W{1'b0}}) || (gam < FLAT_Z);
-                            z0 <= -lam;
-                            // the division starts: numerator gamma + l 2^(S-1), divisor l 2^S
-                            drem <= {DW{1'b0}};
-                            dden <= {l_reg, {S{1'b0}}};
-                            dnq <= gnum;
-                            dcnt <= 6'd0;
-                        end
-                        6'd1: begin
-                            z0 <= (mid > PI_Z) ? z0 - TWO_PI : (mid < -PI_Z) ? z0 + TWO_PI : z0;
-                            lgx <= flat ? c1[F+1:0] : mag[F+1:0];
-                            lg_e <= F + 1;
-                            xpos <= flat ? (!c1[W-1] && c1 != {W{1'b0}}) : (!mag[W-1] && mag != {W{1'b0}});
-                        end
-                        6'd2: begin
-                            nohl <= (n_reg != {N_W{1'b0}}) && (flat ? (c1[W-1] || c1 == {W{1'b0}})
-                                                                   : ((z0 + gam <= -HALF_PI) || (z0 >= HALF_PI)));
-                            zeta0 <= flat ? {ANG_W{1'b0}} : z0r[ANG_W-1:0];
-                            st <= ST_LG;      // log2 of A's operand, then back here at step 3
-                            ph <= 4'd0;
-                        end
-                        6'd3: begin
-                            lx <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
-                            lgx <= {{(F + 2 - STR_W) {1'b0}}, s_reg};
-                            lg_e <= F + 1;
-                        end
-                        6'd4: begin
-                            st <= ST_LG;      // log2 of the strength, then step 5
-                            ph <= 4'd0;
-                        end
-                        6'd5: begin
-                            ls <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
-                        end
-                        6'd6: begin
-                            nla <= {(LF + N_W + 6) {1'b0}};
-                            la_sh <= {{N_W{1'b0}}, (!xpos || la_raw < 0) ? {(LF + 6) {1'b0}}
-                                      : (la_raw > $signed({1'b0, LA_MAX})) ? LA_MAX[LF+5:0] : la_raw[LF+5:0]};
-                        end
-                        6'd7, 6'd8, 6'd9, 6'd10, 6'd11, 6'd12, 6'd13, 6'd14, 6'd15, 6'd16: begin
-                            // n * la_v, one bit of n a clock (below)
-                        end
-                        6'd17: begin
-                            pv <= $signed({2'b00, nla}) - $signed({{(PW - LF - 8) {lis[LF+7]}}, lis});
-                        end
-                        6'd18: begin
-                            sat <= pv <= 0;
-                            st <= ST_EX;      // exp2 of the fraction of p, then step 19
-                            ph <= 4'd0;
-                        end
-                        6'd19: begin
-                            ccode <= (p_i > C_W + 1) ? {C_W{1'b0}}
-                                   : (p_round > {{(W - 1 - C_W) {1'b0}}, {C_W{1'b1}}}) ? {C_W{1'b1}} : p_round[C_W-1:0];
-                        end
-                        default: begin       // 20: wait for the divider and the output register (and stay)
-                            if (dcnt == ZW[5:0] && !(m_tvalid && !m_tready)) begin
-                                m_tvalid <= 1'b1;
-                                m_dzeta <= bad || flat ? {ANG_W{1'b0}} : dzeta;
-                                m_zeta0 <= bad ? {ANG_W{1'b0}} : zeta0;
-                                m_l <= l_reg;
-                                m_n <= n_reg;
-                                m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
-                                m_flags <= bad ? {1'b1, 2'b00, l_reg == {L_W{1'b0}}, 3'b000}
-                                               : {1'b0, rule_reg, nohl, l_reg == {L_W{1'b0}}, !zero_c && sat, opp, flat};
-                                st <= ST_IDLE;
-                            end else begin
-                                bs_step <= bs_step;
-                            end
-                        end
-                    endcase
-                    if (bs_step >= 6'd7 && bs_step <= 6'd16) begin
-                        if (n_reg[nbit]) nla <= nla + la_sh;
-                        la_sh <= {la_sh[LF+N_W+4:0], 1'b0};
-                    end
-                    // the divider runs beside the back end from step 1 on
-                    if (bs_step != 6'd0 && dcnt != ZW[5:0]) begin
-                        drem <= dge ? ddif[DW-1:0] : dsh[DW-1:0];
-                        dnq <= {dnq[ZW-2:0], dge};
-                        dcnt <= dcnt + 6'd1;
-                        if (dcnt == ZW[5:0] - 6'd1) dzeta <= {dnq[ANG_W-2:0], dge};
-                    end
-                end
-                // a log2 lookup of lgx: normalize, read words j and j + 1, interpolate (back to ST_BE)
-                ST_LG: begin
-                    ph <= ph + 4'd1;
-                    case (ph)
-                        4'd0: begin
-                            if (!lgx[F+1] && lg_e != 6'd0) begin
-                                lgx <= {lgx[F:0], 1'b0};
-                                lg_e <= lg_e - 6'd1;
-                                ph <= ph;
-                            end
-                        end
-                        4'd1: tab_a <= lg_j;
-                        4'd2: tab_a <= lg_j + 1'b1;
-                        4'd3: begin
-                            w0 <= {{(EF + 1 - LF) {1'b0}}, lg_w};
-                            tr <= lg_r;
-                        end
-                        4'd4: tdiff <= ((&lg_j) ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w}) - w0;
-                        default: st <= ST_BE;   // tprod is ready
-                    endcase
-                end
-                // an exp2 lookup of p's fraction (back to ST_BE)
-                ST_EX: begin
-                    ph <= ph + 4'd1;
-                    case (ph)
-                        4'd0: tab_a <= pv[LF-1 -: TB];
-                        4'd1: tab_a <= pv[LF-1 -: TB] + 1'b1;
-                        4'd2: begin
-                            w0 <= ex_w;
-                            tr <= pv[LF-TB-1 -: RB];
-                        end
-                        4'd3: tdiff <= w0 - ((&pv[LF-1 -: TB]) ? (1 << (EF - 1)) : ex_w);
-                        4'd4: begin
-                            // 2^-f in la, and the rounding shift (EF - C_W + i, at most EF + 1 when the code is
-                            // not 0) less one in it: code = ((la >>> it) + 1) >> 1, with the lane's shifter
-                            la <= {{(W - EF - 1) {1'b0}}, w0 - tprod_r[EF+RB:RB]};
-                            it <= p_sh1[4:0];
-                        end
-                        default: st <= ST_BE;
-                    endcase
-                end
+                // the back end (spec_setup_backend) makes the descriptor; lambda and A stay in lz and la
+                ST_BE: if (be_done) st <= ST_IDLE;
                 default: st <= ST_IDLE;
             endcase
         end
     end
+
+    spec_setup_backend #(
+        .F(F), .W(W), .ZW(ZW), .ZF(ZF), .LF(LF), .EF(EF), .TB(TB), .RB(RB), .STR_W(STR_W), .STR_FRAC(STR_FRAC),
+        .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+    ) u_back (
+        .clk(clk), .rst(rst), .start(be_start), .done(be_done), .gam(gam), .lam(lz), .mag(la), .c1(c1),
+        .s_str(s_reg), .s_n(n_reg), .s_l(l_reg), .s_rule(rule_reg), .s_bad(bad), .s_opp(opp),
+        .m_tvalid(m_tvalid), .m_tready(m_tready), .m_c(m_c), .m_n(m_n), .m_l(m_l), .m_zeta0(m_zeta0),
+        .m_dzeta(m_dzeta), .m_flags(m_flags)
+    );
 endmodule
 `default_nettype wire
