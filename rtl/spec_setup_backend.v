@@ -13,8 +13,9 @@
 // their interpolation, a restoring divider for dzeta (one subtractor, running beside the program).
 //
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
-// registers: m_tvalid rises when the span is finished and the output register is free, and holds until
-// m_tready; done is 1 for that clock. rst: idle, output empty.
+// registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 is written when zeta0 is
+// made): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
+// handover, and only then may the caller start the next span. rst: idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -55,10 +56,10 @@ module spec_setup_backend #(
     output reg                  m_tvalid,
     input  wire                 m_tready,
     output reg  [C_W-1:0]       m_c,
-    output reg  [N_W-1:0]       m_n,
-    output reg  [L_W-1:0]       m_l,
+    output wire [N_W-1:0]       m_n,
+    output wire [L_W-1:0]       m_l,
     output reg  [ANG_W-1:0]     m_zeta0,
-    output reg  [ANG_W-1:0]     m_dzeta,
+    output wire [ANG_W-1:0]     m_dzeta,
     output reg  [6:0]           m_flags
 );
     localparam S = ZF - ANG_FRAC;
@@ -69,7 +70,7 @@ module spec_setup_backend #(
     localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
 
     // ---- register file: constants and kept values ---------------------------------------------------------------
-    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_ZETA = 4'd3, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
+    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
                      R_HPIM1 = 4'd7, R_S2 = 4'd8, R_OFF = 4'd9, R_OFFF = 4'd10, R_LAMAX = 4'd11, R_STRF = 4'd12;
     reg [PW-1:0] rf[0:15];
     wire [3:0] rf_ra;                       // the word the next step reads
@@ -106,23 +107,6 @@ module spec_setup_backend #(
     reg c_ia, c_ib, c_ci, c_g, c_rw;
     reg [3:0] c_b, c_wa, c_act;
     reg [2:0] c_cd, c_fl;
-    // the log2 lookup (9 steps from the normalization on), the same for both operands: k = step - first step
-    task log2_step(input [6:0] k);
-        begin
-            case (k)
-                7'd1: c_act = X_NORM;                                            // normalize
-                7'd2: c_act = X_TABL;                                            // word j
-                7'd3: c_act = X_TAB1;                                            // word j + 1
-                7'd4: c_act = X_W0;                                              // w0 = word j
-                7'd5: begin c_b = B_TABW; c_a = A_ZERO; c_cd = C_ALL; end         // ACC = word j + 1
-                7'd6: begin c_b = B_W0; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end   // tdiff = ACC - w0
-                7'd7: ;                                                          // product
-                7'd8: begin c_b = B_TPH; c_a = A_ZERO; c_ci = 1'b1; c_cd = C_ALL; end // (product >> RB-1) + 1
-                7'd9: begin c_a = A_SHR; c_b = B_W0; c_cd = C_ALL; end           // w0 + round(product / 2^RB)
-                default: begin c_b = B_ELF; c_cd = C_ALL; end                    // + e * 2^LF: log2
-            endcase
-        end
-    endtask
     always @* begin
         c_a = A_ACC;
         c_ia = 1'b0;
@@ -135,9 +119,34 @@ module spec_setup_backend #(
         c_rw = 1'b0;
         c_wa = R_Z0;
         c_act = X_NONE;
-        if (pc > P_LOG_X && pc <= P_LOG_X + 7'd10) log2_step(pc - P_LOG_X);
-        else if (pc > P_LOG_S && pc <= P_LOG_S + 7'd10) log2_step(pc - P_LOG_S);
-        else if (pc >= P_HORNER && pc < P_HORNER + 7'd10) begin
+        // the log2 lookups (ten steps after P_LOG_X and after P_LOG_S, the same for both operands)
+        if (pc == P_LOG_X + 7'd1 || pc == P_LOG_S + 7'd1) c_act = X_NORM;              // normalize
+        else if (pc == P_LOG_X + 7'd2 || pc == P_LOG_S + 7'd2) c_act = X_TABL;         // word j
+        else if (pc == P_LOG_X + 7'd3 || pc == P_LOG_S + 7'd3) c_act = X_TAB1;         // word j + 1
+        else if (pc == P_LOG_X + 7'd4 || pc == P_LOG_S + 7'd4) c_act = X_W0;           // w0 = word j
+        else if (pc == P_LOG_X + 7'd5 || pc == P_LOG_S + 7'd5) begin                   // ACC = word j + 1
+            c_b = B_TABW;
+            c_a = A_ZERO;
+            c_cd = C_ALL;
+        end else if (pc == P_LOG_X + 7'd6 || pc == P_LOG_S + 7'd6) begin               // tdiff = ACC - w0
+            c_b = B_W0;
+            c_ib = 1'b1;
+            c_ci = 1'b1;
+            c_cd = C_ALL;
+        end else if (pc == P_LOG_X + 7'd8 || pc == P_LOG_S + 7'd8) begin               // (product >> RB-1) + 1
+            c_b = B_TPH;
+            c_a = A_ZERO;
+            c_ci = 1'b1;
+            c_cd = C_ALL;
+        end else if (pc == P_LOG_X + 7'd9 || pc == P_LOG_S + 7'd9) begin               // w0 + round(product / 2^RB)
+            c_a = A_SHR;
+            c_b = B_W0;
+            c_cd = C_ALL;
+        end else if (pc == P_LOG_X + 7'd10 || pc == P_LOG_S + 7'd10) begin             // + e * 2^LF: log2
+            c_b = B_ELF;
+            c_cd = C_ALL;
+        end
+        else if (pc >= P_HORNER && pc < P_HORNER + N_W[6:0]) begin
             c_a = A_SHL;                                                        // n * la_v, from n's top bit
             c_b = B_RF;
             c_g = 1'b1;
@@ -161,7 +170,7 @@ module spec_setup_backend #(
                 7'd14: begin c_b = B_RF; c_fl = FL_B; end                                    // <= -pi/2
                 7'd15: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                     // z0
                 7'd16: begin c_b = B_RF; c_cd = C_ALL; end                                   // + 2^(S-1)
-                P_LOG_X: begin c_rw = 1'b1; c_wa = R_ZETA; c_act = X_LGX; end
+                P_LOG_X: c_act = X_LGX;                                                      // and zeta0
                 7'd28: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_cd = C_ALL; end         // la = off - log2 x
                 7'd29: c_fl = FL_NEG;                                                        // la < 0
                 7'd30: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_fl = FL_BIG; end        // la > LA_MAX
@@ -200,7 +209,6 @@ module spec_setup_backend #(
                 7'd30, 7'd31: ra_of = R_LAMAX;
                 7'd44: ra_of = R_STRF;
                 7'd56: ra_of = R_LIS;
-                P_OUT: ra_of = R_ZETA;
                 default: ra_of = R_LAV;                                                      // the products
             endcase
         end
@@ -279,10 +287,9 @@ module spec_setup_backend #(
     wire c1_pos = !c1[W-1] && c1 != {W{1'b0}};
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
     wire zero_c = s_bad || nohl || (s_str == {STR_W{1'b0}}) || ((s_n != {N_W{1'b0}}) && !xpos);
-    wire out_free = !(m_tvalid && !m_tready);
     wire norm_more = !lgx[F+1] && lg_e != 6'd0;
     wire hold = (c_act == X_IDLE && !start) || (c_act == X_NORM && norm_more) || (c_act == X_SHIFT && sc != 6'd0) ||
-                (c_act == X_OUT && !(div_done && out_free));
+                (c_act == X_OUT && !(m_tvalid && m_tready));
     reg [6:0] pc_next;
     always @* begin
         if (hold) pc_next = pc;
@@ -291,16 +298,18 @@ module spec_setup_backend #(
     end
     wire [PW-LF-1:0] p_i = acc[PW-1:LF];
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
-    wire [ANG_W-1:0] zeta_rd = rd[S +: ANG_W];
+    assign m_n = s_n;
+    assign m_l = s_l;
+    assign m_dzeta = dnq[ANG_W-1:0];
     wire unused_bits;
-    assign unused_bits = &{1'b0, tprod[RB-2:0], rd[PW-1:S+ANG_W], rd[S-1:0], hidx[6:4]};
+    assign unused_bits = &{1'b0, tprod[RB-2:0], hidx[6:4], dnq[ZW-1:ANG_W]};
 
     // the register file: a registered read of the next step's word; a step's write takes ACC before the step
     assign rf_ra = ra_of(pc_next, flat);
-    always @(posedge clk) begin
-        if (c_rw) rf[c_wa] <= acc;
-        rd <= rf[rf_ra];
-    end
+    // write and read in separate processes: a word is read at the earliest two steps after its write, so no
+    // read-during-write relation is needed (and none is built)
+    always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
+    always @(posedge clk) rd <= rf[rf_ra];
 
     always @(posedge clk) begin
         done <= 1'b0;
@@ -325,6 +334,8 @@ module spec_setup_backend #(
             case (c_act)
                 X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (gam < FLAT_Z);
                 X_LGX, X_LGS: begin
+                    // zeta0 = (z0 + 2^(S-1)) >>> S, in ACC's bits (0 for flat and invalid spans)
+                    if (c_act == X_LGX) m_zeta0 <= (s_bad || flat) ? {ANG_W{1'b0}} : acc[S +: ANG_W];
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
                     if (c_act == X_LGX) xpos <= flat ? c1_pos : (!mag[W-1] && mag != {W{1'b0}});
@@ -357,13 +368,10 @@ module spec_setup_backend #(
                     end
                 end
                 X_OUT: begin
-                    if (div_done && out_free) begin
+                    if (m_tvalid && m_tready) done <= 1'b1;
+                    if (div_done && !m_tvalid && !done) begin
                         m_tvalid <= 1'b1;
-                        done <= 1'b1;
-                        m_dzeta <= s_bad || flat ? {ANG_W{1'b0}} : dnq[ANG_W-1:0];
-                        m_zeta0 <= s_bad || flat ? {ANG_W{1'b0}} : zeta_rd;
-                        m_l <= s_l;
-                        m_n <= s_n;
+                        if (s_bad || flat) dnq <= {ZW{1'b0}};
                         m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
                         m_flags <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
                                          : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};

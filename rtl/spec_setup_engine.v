@@ -62,7 +62,7 @@ module spec_setup_engine #(
     localparam [`SETUP_HALF_N-1:0] HNEG = `SETUP_HALF_NEG;
     localparam signed [ZW-1:0] HALF_PI = `SETUP_HALF_PI;
     localparam [W-1:0] U = `SETUP_N1_START;
-    localparam [W-1:0] TAU = `SETUP_OPP_TAU;
+    localparam signed [W-1:0] TAU = `SETUP_OPP_TAU;
 
     // ---- the runs: vector, plane (0: a = x, b = y, t = z; 1: a = z, b = x, t = y), role, halving -----------
     // vectors: 0 N1, 1 N2, 2 H1, 3 H2, 4 P (perpendicular(N1)), 5 N1 of the H1 frame ("M1")
@@ -99,15 +99,18 @@ module spec_setup_engine #(
     wire [1:0] run_role;
     assign {run_vec, run_plane, run_role, run_halve} = RUNS[run*7 +: 7];
 
+    localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
+    reg [2:0] st;
+    reg [4:0] it;                         // micro-rotation
+
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
     reg [W-1:0] vmem[0:31];
     reg [4:0] v_ra, v_wa;
     reg v_we;
     reg [W-1:0] v_wd, v_rd;
-    always @(posedge clk) begin
-        if (v_we) vmem[v_wa] <= v_wd;
-        v_rd <= vmem[v_ra];
-    end
+    // write and read in separate processes: no read-during-write relation (never used), so no bypass logic
+    always @(posedge clk) if (v_we) vmem[v_wa] <= v_wd;
+    always @(posedge clk) v_rd <= vmem[v_ra];
     // the coordinates of a, b, t for the current run
     wire [1:0] ca = run_plane ? 2'd2 : 2'd0;
     wire [1:0] cb = run_plane ? 2'd0 : 2'd1;
@@ -127,44 +130,37 @@ module spec_setup_engine #(
     // P = perpendicular(N1) from N1's codes (N1 x e_k, e_k the axis of its smallest component) and M1 = (0, 0, U)
     reg [2:0] ld_v;                       // 0..3: N1, N2, H1, H2; 4: P; 5: M1
     reg [1:0] ld_c;                       // 0: the vector's shift; 1..3: its x, y, z
-    reg [5:0] ld_sh, n1_sh;               // the shift of the vector being loaded, N1's
-    reg [3*VEC_W-1:0] n1q;                // N1's codes
+    // the prescale shift F - 1 - lead is F - VEC_W (wiring) plus VEC_W - 1 - lead, SHB bits
+    localparam SHB = (VEC_W <= 16) ? 4 : (VEC_W <= 32) ? 5 : 6;
+    reg [SHB-1:0] ld_sh;                  // the variable part of the shift of the vector being loaded
     wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
     wire [VEC_W-1:0] mx = cx[VEC_W-1] ? -cx : cx, my = cy[VEC_W-1] ? -cy : cy, mz = cz[VEC_W-1] ? -cz : cz;
     wire [VEC_W-1:0] mor = mx | my | mz;   // its leading one is the largest magnitude's
-    localparam [5:0] FM1 = F - 1;
     reg [5:0] lead;
     integer k;
     always @* begin
         lead = 6'd0;
         for (k = 0; k < VEC_W; k = k + 1) if (mor[k]) lead = k[5:0];
     end
-    wire signed [VEC_W-1:0] qx = n1q[0 +: VEC_W], qy = n1q[VEC_W +: VEC_W], qz = n1q[2*VEC_W +: VEC_W];
-    wire [VEC_W-1:0] ax = qx[VEC_W-1] ? -qx : qx, ay = qy[VEC_W-1] ? -qy : qy, az = qz[VEC_W-1] ? -qz : qz;
-    wire [1:0] pk = (ax <= ay && ax <= az) ? 2'd0 : (ay <= az) ? 2'd1 : 2'd2;
-    // P's component c (1 x, 2 y, 3 z): k = x: (0, nz, -ny); k = y: (-nz, 0, nx); k = z: (ny, -nx, 0)
-    reg signed [VEC_W:0] pc;
-    always @* begin
-        case ({pk, ld_c})
-            {2'd0, 2'd2}: pc = {qz[VEC_W-1], qz};
-            {2'd0, 2'd3}: pc = -{qy[VEC_W-1], qy};
-            {2'd1, 2'd1}: pc = -{qz[VEC_W-1], qz};
-            {2'd1, 2'd3}: pc = {qx[VEC_W-1], qx};
-            {2'd2, 2'd1}: pc = {qy[VEC_W-1], qy};
-            {2'd2, 2'd2}: pc = -{qx[VEC_W-1], qx};
-            default: pc = {(VEC_W + 1) {1'b0}};
-        endcase
-    end
-    wire signed [VEC_W:0] ld_val = (ld_v == 3'd4) ? pc : {cx[VEC_W-1], cx};
-    wire signed [W-1:0] ld_ext = {{(W - VEC_W - 1) {ld_val[VEC_W]}}, ld_val};
-    wire signed [W-1:0] ld_word = ld_ext <<< ((ld_v == 3'd4) ? n1_sh : ld_sh);
+    wire signed [W-1:0] ld_ext = {{(W - VEC_W) {cx[VEC_W-1]}}, cx};
+    wire signed [W-1:0] ld_word = (ld_ext <<< (F - VEC_W)) <<< ld_sh;
+    // P = N1 x e_k (e_k the axis of N1's smallest component, the first of equals): k = x: (0, nz, -ny);
+    // k = y: (-nz, 0, nx); k = z: (ny, -nx, 0), from N1's prescaled words (the same shift): component c is 0
+    // for c = k, else the remaining axis 3 - k - c of N1, negated for c = k + 2 (mod 3)
+    reg [1:0] pk;
+    wire [1:0] p_c = ph[1:0] - 2'd2;      // the component written at phase ph (2..4)
+    wire [1:0] p_src = 2'd3 - pk - ph[1:0];   // the axis read at phase ph (0..2)
+    wire p_neg = p_c == ((pk == 2'd0) ? 2'd2 : pk - 2'd1);
+    wire signed [W-1:0] v_neg = -$signed(v_rd);
+    localparam [5:0] VM1 = VEC_W - 1;
+    wire [5:0] sh_var = VM1 - lead;       // 0 .. VEC_W - 1
+    wire unused_sh = &{1'b0, sh_var};
 
     // ---- the CORDIC lane -------------------------------------------------------------------------------------
     reg signed [W-1:0] la, lb, acc;       // the pair, the third coordinate's gain sum
     reg signed [ZW-1:0] lz;
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
-    reg [4:0] it;                         // micro-rotation
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
     wire signed [W-1:0] as = la >>> it;
     wire signed [W-1:0] bs = lb >>> it;
@@ -205,12 +201,16 @@ module spec_setup_engine #(
     wire [ZW-1:0] atan_i = atab[it];
 
     // ---- control ----------------------------------------------------------------------------------------------------
-    localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
-    reg [2:0] st;
     reg [3:0] ph;                         // phase within a state
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
+    wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
+    wire signed [W-1:0] la_neg = -la, lb_neg = -lb;
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
+    // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
+    wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
+    wire lb_small = (lb < TAU) && (lb > -TAU);
+    wire acc_small = (acc < TAU) && (acc > -TAU);
 
     always @(posedge clk) begin
         v_we <= 1'b0;
@@ -232,18 +232,29 @@ module spec_setup_engine #(
                         bad <= 1'b0;
                         ld_v <= 3'd0;
                         ld_c <= 2'd0;
+                        ph <= 4'd0;
                         st <= ST_LOAD;
                     end
                 end
                 // write the prescaled vectors (and P, and M1 = (0, 0, U)) into the vector memory
                 ST_LOAD: begin
-                    if (ld_c == 2'd0) begin
-                        // the vector's shift (input vectors) from its components' leading one
-                        ld_sh <= FM1 - lead;
-                        if (ld_v == 3'd0) begin
-                            n1_sh <= FM1 - lead;
-                            n1q <= vec_in[0 +: 3*VEC_W];
+                    if (ld_v == 3'd4) begin
+                        // P: read N1's words at phases 0..2, write P's at 2..4 (the read takes two clocks)
+                        ph <= ph + 4'd1;
+                        if (ph < 4'd3) v_ra <= {3'd0, p_src};
+                        if (ph >= 4'd2) begin
+                            v_we <= 1'b1;
+                            v_wa <= {3'd4, p_c};
+                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_rd;
                         end
+                        if (ph == 4'd4) begin
+                            ph <= 4'd0;
+                            ld_v <= 3'd5;
+                        end
+                    end else if (ld_c == 2'd0) begin
+                        // the vector's shift (input vectors) from its components' leading one
+                        ld_sh <= sh_var[SHB-1:0];
+                        if (ld_v == 3'd0) pk <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
                         if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
                         ld_c <= 2'd1;
                     end else begin
@@ -273,9 +284,9 @@ module spec_setup_engine #(
                         4'd1: v_ra <= {run_vec, cb};
                         4'd2: begin
                             v_ra <= {run_vec, ct};
-                            la <= run_halve ? ($signed(v_rd + 1'b1) >>> 1) : $signed(v_rd);
+                            la <= run_halve ? v_half : $signed(v_rd);
                         end
-                        4'd3: lb <= run_halve ? ($signed(v_rd + 1'b1) >>> 1) : $signed(v_rd);
+                        4'd3: lb <= run_halve ? v_half : $signed(v_rd);
                         default: begin
                             lts <= v_rd;
                             acc <= !tc_first[1] ? {W{1'b0}} : tc_first[0] ? -($signed(v_rd) <<< 1) : ($signed(v_rd) <<< 1);
@@ -285,13 +296,13 @@ module spec_setup_engine #(
                             // followers replay), a quarter turn (angle runs)
                             if (run_role == 2'd2) begin
                                 if (la[W-1]) begin
-                                    la <= lb[W-1] ? -lb : lb;
-                                    lb <= lb[W-1] ? la : -la;
+                                    la <= lb[W-1] ? lb_neg : lb;
+                                    lb <= lb[W-1] ? la : la_neg;
                                     lz <= lb[W-1] ? -HALF_PI : HALF_PI;
                                 end
                             end else if ((run_role == 2'd0) ? la[W-1] : neg) begin
-                                la <= -la;
-                                lb <= -lb;
+                                la <= la_neg;
+                                lb <= lb_neg;
                             end
                             if (run_role == 2'd0) neg <= la[W-1];
                             st <= ST_ROT;
@@ -345,9 +356,9 @@ module spec_setup_engine #(
                     endcase
                     if (ph == 4'd0) begin
                         // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite?
-                        if (run == 5'd6) exact_opp <= la[W-1] && ((lb[W-1] ? -lb : lb) < TAU) && ((acc[W-1] ? -acc : acc) < TAU);
+                        if (run == 5'd6) exact_opp <= la[W-1] && lb_small && acc_small;
                         // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
-                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && ($signed(rho2k) < -$signed({{10{acc[W-1]}}, acc})));
+                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                         if (run == 5'd21) c1 <= acc;
                         if (run == 5'd22) gam <= lz;
                     end
