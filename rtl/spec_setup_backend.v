@@ -41,10 +41,10 @@ module spec_setup_backend #(
 ) (
     input  wire                 clk,
     input  wire                 rst,
-    input  wire                 start,
+    input  wire                 start,   // gamma is in lz
+    input  wire                 lam_ok,  // lambda is in lz, A * 2^F in mag (until done)
     output reg                  done,
-    input  wire signed [ZW-1:0] gam,     // gamma, ZF fraction bits
-    input  wire signed [ZW-1:0] lam,     // lambda
+    input  wire signed [ZW-1:0] lz,      // the angle lane: gamma, then lambda (ZF fraction bits)
     input  wire signed [W-1:0]  mag,     // A * 2^F
     input  wire signed [W-1:0]  c1,      // cos(theta1) * 2^F / G
     input  wire [STR_W-1:0]     s_str,
@@ -70,7 +70,7 @@ module spec_setup_backend #(
     localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
 
     // ---- register file: constants and kept values ---------------------------------------------------------------
-    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
+    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
                      R_HPIM1 = 4'd7, R_S2 = 4'd8, R_OFF = 4'd9, R_OFFF = 4'd10, R_LAMAX = 4'd11, R_STRF = 4'd12;
     reg [PW-1:0] rf[0:15];
     wire [3:0] rf_ra;                       // the word the next step reads
@@ -93,7 +93,7 @@ module spec_setup_backend #(
     // the multiplication step), we (ACC <= sum) under condition cd, fl (a flag from the sum's sign), rw / wa
     // (register file write of ACC), ra (register file word for B), act (the other units).
     localparam [1:0] A_ACC = 2'd0, A_ZERO = 2'd1, A_SHL = 2'd2, A_SHR = 2'd3;
-    localparam [3:0] B_RF = 4'd0, B_ZERO = 4'd1, B_GAM = 4'd2, B_LAM = 4'd3, B_TABW = 4'd4, B_W0 = 4'd5,
+    localparam [3:0] B_RF = 4'd0, B_ZERO = 4'd1, B_LZ = 4'd3, B_TABW = 4'd4, B_W0 = 4'd5,
                      B_TPH = 4'd6, B_ELF = 4'd7, B_LSH = 4'd8;
     localparam [2:0] C_NO = 3'd0, C_ALL = 3'd1, C_HI = 3'd2, C_LO = 3'd3, C_BIG = 3'd4, C_ZLA = 3'd5;
     localparam [2:0] FL_NO = 3'd0, FL_HI = 3'd1, FL_LO = 3'd2, FL_A = 3'd3, FL_B = 3'd4, FL_NEG = 3'd5, FL_BIG = 3'd6,
@@ -154,10 +154,10 @@ module spec_setup_backend #(
         end else begin
             case (pc)
                 7'd0: c_act = X_IDLE;
-                7'd1: begin c_a = A_ZERO; c_b = B_GAM; c_cd = C_ALL; end                     // gamma
-                7'd2: begin c_b = B_LSH; c_cd = C_ALL; end                                   // + l 2^(S-1)
-                7'd3: begin c_a = A_ZERO; c_b = B_LAM; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; c_act = X_DIV; end  // z0 = -lambda
-                7'd4: begin c_a = A_ZERO; c_b = B_GAM; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end
+                7'd1: begin c_a = A_ZERO; c_b = B_LZ; c_cd = C_ALL; end                      // gamma
+                7'd2: begin c_b = B_LSH; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_GAM; end        // + l 2^(S-1)
+                7'd3: begin c_a = A_ZERO; c_b = B_LZ; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; c_act = X_DIV; end  // z0 = -lambda
+                7'd4: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end  // gamma
                 7'd5: begin c_a = A_SHR; c_cd = C_ALL; end                                   // gamma >>> 1
                 7'd6: begin c_b = B_RF; c_cd = C_ALL; end                                    // mid = z0 + gamma/2
                 7'd7: begin c_b = B_RF; c_ib = 1'b1; c_fl = FL_HI; end                       // mid > pi
@@ -166,7 +166,7 @@ module spec_setup_backend #(
                 7'd10: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_HI; end          // - 2 pi
                 7'd11: begin c_b = B_RF; c_cd = C_LO; end                                    // + 2 pi
                 7'd12: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_fl = FL_A; end          // z0 >= pi/2
-                7'd13: begin c_b = B_GAM; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end        // z0 + gamma
+                7'd13: begin c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end         // z0 + gamma
                 7'd14: begin c_b = B_RF; c_fl = FL_B; end                                    // <= -pi/2
                 7'd15: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                     // z0
                 7'd16: begin c_b = B_RF; c_cd = C_ALL; end                                   // + 2^(S-1)
@@ -199,6 +199,7 @@ module spec_setup_backend #(
     function [3:0] ra_of(input [6:0] p, input fl);
         begin
             case (p)
+                7'd4, 7'd13: ra_of = R_GAM;
                 7'd6, 7'd9, 7'd15: ra_of = R_Z0;
                 7'd7, 7'd8: ra_of = R_PI;
                 7'd10, 7'd11: ra_of = R_2PI;
@@ -249,8 +250,7 @@ module spec_setup_backend #(
         endcase
         case (c_b)
             B_RF: opb = (c_g && !nb) ? {PW{1'b0}} : rd;
-            B_GAM: opb = {{(PW - ZW) {gam[ZW-1]}}, gam};
-            B_LAM: opb = {{(PW - ZW) {lam[ZW-1]}}, lam};
+            B_LZ: opb = {{(PW - ZW) {lz[ZW-1]}}, lz};
             B_TABW: opb = {{(PW - EF - 1) {1'b0}}, tabw};
             B_W0: opb = {{(PW - EF - 1) {1'b0}}, w0};
             B_TPH: opb = {{(PW - EF - 2) {1'b0}}, tprod[EF+RB:RB-1]};
@@ -288,7 +288,8 @@ module spec_setup_backend #(
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
     wire zero_c = s_bad || nohl || (s_str == {STR_W{1'b0}}) || ((s_n != {N_W{1'b0}}) && !xpos);
     wire norm_more = !lgx[F+1] && lg_e != 6'd0;
-    wire hold = (c_act == X_IDLE && !start) || (c_act == X_NORM && norm_more) || (c_act == X_SHIFT && sc != 6'd0) ||
+    wire hold = (c_act == X_IDLE && !start) || (c_act == X_DIV && !lam_ok) || (c_act == X_NORM && norm_more) ||
+                (c_act == X_SHIFT && sc != 6'd0) ||
                 (c_act == X_OUT && !(m_tvalid && m_tready));
     reg [6:0] pc_next;
     always @* begin
@@ -320,7 +321,7 @@ module spec_setup_backend #(
         end else begin
             if (m_tvalid && m_tready) m_tvalid <= 1'b0;
             pc <= pc_next;
-            if (c_cd != C_NO && cond) acc <= sum;
+            if (c_cd != C_NO && cond && !hold) acc <= sum;
             case (c_fl)
                 FL_HI: f_hi <= !neg;
                 FL_LO: f_lo <= neg;
@@ -332,7 +333,7 @@ module spec_setup_backend #(
                 default: ;
             endcase
             case (c_act)
-                X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (gam < FLAT_Z);
+                X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);   // lz: gamma at the start
                 X_LGX, X_LGS: begin
                     // zeta0 = (z0 + 2^(S-1)) >>> S, in ACC's bits (0 for flat and invalid spans)
                     if (c_act == X_LGX) m_zeta0 <= (s_bad || flat) ? {ANG_W{1'b0}} : acc[S +: ANG_W];
@@ -380,7 +381,7 @@ module spec_setup_backend #(
                 default: ;
             endcase
             // the divider: started by step X_DIV with the numerator in ACC, then runs beside the program
-            if (c_act == X_DIV) begin
+            if (c_act == X_DIV && !hold) begin
                 drem <= {DW{1'b0}};
                 dnq <= acc[ZW-1:0];
                 dcnt <= 6'd0;

@@ -122,7 +122,6 @@ module spec_setup_engine #(
     reg [N_W-1:0] n_reg;
     reg [L_W-1:0] l_reg;
     reg rule_reg, bad, exact_opp, opp;
-    reg signed [ZW-1:0] gam;
     reg signed [W-1:0] c1;
 
     // the vectors into the vector memory, one component a clock: the input vectors are shifted out of vec_in,
@@ -360,13 +359,13 @@ module spec_setup_engine #(
                         // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
                         if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                         if (run == 5'd21) c1 <= acc;
-                        if (run == 5'd22) gam <= lz;
+                        // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
+                        if (run == 5'd22) be_start <= 1'b1;
                     end
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
                         if (run == NRUN - 1) begin
                             st <= ST_BE;
-                            be_start <= 1'b1;
                         end else begin
                             run <= run + 5'd1;
                             st <= ST_RD;
@@ -384,7 +383,7 @@ module spec_setup_engine #(
         .F(F), .W(W), .ZW(ZW), .ZF(ZF), .LF(LF), .EF(EF), .TB(TB), .RB(RB), .STR_W(STR_W), .STR_FRAC(STR_FRAC),
         .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_back (
-        .clk(clk), .rst(rst), .start(be_start), .done(be_done), .gam(gam), .lam(lz), .mag(la), .c1(c1),
+        .clk(clk), .rst(rst), .start(be_start), .lam_ok(st == ST_BE), .done(be_done), .lz(lz), .mag(la), .c1(c1),
         .s_str(s_reg), .s_n(n_reg), .s_l(l_reg), .s_rule(rule_reg), .s_bad(bad), .s_opp(opp),
         .m_tvalid(m_tvalid), .m_tready(m_tready), .m_c(m_c), .m_n(m_n), .m_l(m_l), .m_zeta0(m_zeta0),
         .m_dzeta(m_dzeta), .m_flags(m_flags)
