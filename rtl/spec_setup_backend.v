@@ -13,8 +13,8 @@
 // their interpolation, a restoring divider for dzeta (one subtractor, running beside the program).
 //
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
-// registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 is written when zeta0 is
-// made): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
+// registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 the register file's read
+// register holding word R_ZETA): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
 // handover, and only then may the caller start the next span. rst: idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -46,7 +46,7 @@ module spec_setup_backend #(
     output reg                  done,
     input  wire signed [ZW-1:0] lz,      // the angle lane: gamma, then lambda (ZF fraction bits)
     input  wire signed [W-1:0]  mag,     // A * 2^F
-    input  wire signed [W-1:0]  c1,      // cos(theta1) * 2^F / G
+    input  wire signed [W-1:0]  c1,      // cos(theta1) * 2^F / G (valid from step P_LOG_X on)
     input  wire [STR_W-1:0]     s_str,
     input  wire [N_W-1:0]       s_n,
     input  wire [L_W-1:0]       s_l,
@@ -58,7 +58,7 @@ module spec_setup_backend #(
     output reg  [C_W-1:0]       m_c,
     output wire [N_W-1:0]       m_n,
     output wire [L_W-1:0]       m_l,
-    output reg  [ANG_W-1:0]     m_zeta0,
+    output wire [ANG_W-1:0]     m_zeta0,
     output wire [ANG_W-1:0]     m_dzeta,
     output reg  [6:0]           m_flags
 );
@@ -70,7 +70,7 @@ module spec_setup_backend #(
     localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
 
     // ---- register file: constants and kept values ---------------------------------------------------------------
-    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
+    localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_ZETA = 4'd13, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
                      R_HPIM1 = 4'd7, R_S2 = 4'd8, R_OFF = 4'd9, R_OFFF = 4'd10, R_LAMAX = 4'd11, R_STRF = 4'd12;
     reg [PW-1:0] rf[0:15];
     wire [3:0] rf_ra;                       // the word the next step reads
@@ -95,7 +95,7 @@ module spec_setup_backend #(
     localparam [1:0] A_ACC = 2'd0, A_ZERO = 2'd1, A_SHL = 2'd2, A_SHR = 2'd3;
     localparam [3:0] B_RF = 4'd0, B_ZERO = 4'd1, B_LZ = 4'd3, B_TABW = 4'd4, B_W0 = 4'd5,
                      B_TPH = 4'd6, B_ELF = 4'd7, B_LSH = 4'd8;
-    localparam [2:0] C_NO = 3'd0, C_ALL = 3'd1, C_HI = 3'd2, C_LO = 3'd3, C_BIG = 3'd4, C_ZLA = 3'd5;
+    localparam [2:0] C_NO = 3'd0, C_ALL = 3'd1, C_HI = 3'd2, C_LO = 3'd3, C_BIG = 3'd4, C_ZLA = 3'd5, C_ZETA = 3'd6;
     localparam [2:0] FL_NO = 3'd0, FL_HI = 3'd1, FL_LO = 3'd2, FL_A = 3'd3, FL_B = 3'd4, FL_NEG = 3'd5, FL_BIG = 3'd6,
                      FL_SAT = 3'd7;
     localparam [3:0] X_NONE = 4'd0, X_DIV = 4'd1, X_LGX = 4'd2, X_LGS = 4'd3, X_NORM = 4'd4, X_TABL = 4'd5,
@@ -119,82 +119,71 @@ module spec_setup_backend #(
         c_rw = 1'b0;
         c_wa = R_Z0;
         c_act = X_NONE;
-        // the log2 lookups (ten steps after P_LOG_X and after P_LOG_S, the same for both operands)
-        if (pc == P_LOG_X + 7'd1 || pc == P_LOG_S + 7'd1) c_act = X_NORM;              // normalize
-        else if (pc == P_LOG_X + 7'd2 || pc == P_LOG_S + 7'd2) c_act = X_TABL;         // word j
-        else if (pc == P_LOG_X + 7'd3 || pc == P_LOG_S + 7'd3) c_act = X_TAB1;         // word j + 1
-        else if (pc == P_LOG_X + 7'd4 || pc == P_LOG_S + 7'd4) c_act = X_W0;           // w0 = word j
-        else if (pc == P_LOG_X + 7'd5 || pc == P_LOG_S + 7'd5) begin                   // ACC = word j + 1
-            c_b = B_TABW;
-            c_a = A_ZERO;
-            c_cd = C_ALL;
-        end else if (pc == P_LOG_X + 7'd6 || pc == P_LOG_S + 7'd6) begin               // tdiff = ACC - w0
-            c_b = B_W0;
-            c_ib = 1'b1;
-            c_ci = 1'b1;
-            c_cd = C_ALL;
-        end else if (pc == P_LOG_X + 7'd8 || pc == P_LOG_S + 7'd8) begin               // (product >> RB-1) + 1
-            c_b = B_TPH;
-            c_a = A_ZERO;
-            c_ci = 1'b1;
-            c_cd = C_ALL;
-        end else if (pc == P_LOG_X + 7'd9 || pc == P_LOG_S + 7'd9) begin               // w0 + round(product / 2^RB)
-            c_a = A_SHR;
-            c_b = B_W0;
-            c_cd = C_ALL;
-        end else if (pc == P_LOG_X + 7'd10 || pc == P_LOG_S + 7'd10) begin             // + e * 2^LF: log2
-            c_b = B_ELF;
-            c_cd = C_ALL;
-        end
-        else if (pc >= P_HORNER && pc < P_HORNER + N_W[6:0]) begin
-            c_a = A_SHL;                                                        // n * la_v, from n's top bit
-            c_b = B_RF;
-            c_g = 1'b1;
-            c_cd = C_ALL;
-        end else begin
-            case (pc)
-                7'd0: c_act = X_IDLE;
-                7'd1: begin c_a = A_ZERO; c_b = B_LZ; c_cd = C_ALL; end                      // gamma
-                7'd2: begin c_b = B_LSH; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_GAM; end        // + l 2^(S-1)
-                7'd3: begin c_a = A_ZERO; c_b = B_LZ; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; c_act = X_DIV; end  // z0 = -lambda
-                7'd4: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end  // gamma
-                7'd5: begin c_a = A_SHR; c_cd = C_ALL; end                                   // gamma >>> 1
-                7'd6: begin c_b = B_RF; c_cd = C_ALL; end                                    // mid = z0 + gamma/2
-                7'd7: begin c_b = B_RF; c_ib = 1'b1; c_fl = FL_HI; end                       // mid > pi
-                7'd8: begin c_b = B_RF; c_fl = FL_LO; end                                    // mid < -pi
-                7'd9: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                      // z0
-                7'd10: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_HI; end          // - 2 pi
-                7'd11: begin c_b = B_RF; c_cd = C_LO; end                                    // + 2 pi
-                7'd12: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_fl = FL_A; end          // z0 >= pi/2
-                7'd13: begin c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end         // z0 + gamma
-                7'd14: begin c_b = B_RF; c_fl = FL_B; end                                    // <= -pi/2
-                7'd15: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                     // z0
-                7'd16: begin c_b = B_RF; c_cd = C_ALL; end                                   // + 2^(S-1)
-                P_LOG_X: c_act = X_LGX;                                                      // and zeta0
-                7'd28: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_cd = C_ALL; end         // la = off - log2 x
-                7'd29: c_fl = FL_NEG;                                                        // la < 0
-                7'd30: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_fl = FL_BIG; end        // la > LA_MAX
-                7'd31: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_BIG; end
-                7'd32: begin c_a = A_ZERO; c_cd = C_ZLA; end
-                P_LOG_S: begin c_rw = 1'b1; c_wa = R_LAV; c_act = X_LGS; end
-                7'd44: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end         // lis = log2 Is - frac
-                7'd45: begin c_a = A_ZERO; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_LIS; end
-                7'd56: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end         // p = n la - lis
-                P_EXP: begin c_ib = 1'b1; c_fl = FL_SAT; c_act = X_TABE; end                 // p <= 0; word j
-                7'd58: c_act = X_TAB1;
-                7'd59: c_act = X_W0;
-                7'd60: begin c_a = A_ZERO; c_b = B_W0; c_cd = C_ALL; end
-                7'd61: begin c_b = B_TABW; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end       // tdiff
-                7'd63: begin c_a = A_ZERO; c_b = B_TPH; c_ci = 1'b1; c_cd = C_ALL; end
-                7'd64: begin c_a = A_SHR; c_ia = 1'b1; c_b = B_W0; c_ci = 1'b1; c_cd = C_ALL; end   // 2^-f
-                7'd65: begin c_a = A_SHR; c_act = X_SHIFT; end                               // >> (shift - 1)
-                7'd66: begin c_ci = 1'b1; c_cd = C_ALL; end                                  // + 1
-                7'd67: begin c_a = A_SHR; c_cd = C_ALL; end                                  // >> 1
-                P_OUT: c_act = X_OUT;
-                default: ;                                                                   // 62: product
-            endcase
-        end
+        // one case over the program counter (a ROM): the two log2 lookups (ten steps after P_LOG_X and after
+        // P_LOG_S, alike but for zeta0's zeroing in the second), the multiplication n * la_v (N_W steps from
+        // P_HORNER, from n's top bit), the other steps
+        case (pc)
+            7'd0: c_act = X_IDLE;
+            7'd1: begin c_a = A_ZERO; c_b = B_LZ; c_cd = C_ALL; end                          // gamma
+            7'd2: begin c_b = B_LSH; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_GAM; end            // + l 2^(S-1)
+            7'd3: begin c_a = A_ZERO; c_b = B_LZ; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; c_act = X_DIV; end  // -lambda
+            7'd4: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end  // gamma
+            7'd5: begin c_a = A_SHR; c_cd = C_ALL; end                                       // gamma >>> 1
+            7'd6: begin c_b = B_RF; c_cd = C_ALL; end                                        // mid = z0 + gamma/2
+            7'd7: begin c_b = B_RF; c_ib = 1'b1; c_fl = FL_HI; end                           // mid > pi
+            7'd8: begin c_b = B_RF; c_fl = FL_LO; end                                        // mid < -pi
+            7'd9: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                          // z0
+            7'd10: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_HI; end              // - 2 pi
+            7'd11: begin c_b = B_RF; c_cd = C_LO; end                                        // + 2 pi
+            7'd12: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_fl = FL_A; end              // z0 >= pi/2
+            7'd13: begin c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end             // z0 + gamma
+            7'd14: begin c_b = B_RF; c_fl = FL_B; end                                        // <= -pi/2
+            7'd15: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                         // z0
+            7'd16: begin c_b = B_RF; c_cd = C_ALL; end                                       // + 2^(S-1)
+            P_LOG_X: begin c_rw = 1'b1; c_wa = R_ZETA; c_act = X_LGX; end                    // log2 x
+            P_LOG_X + 7'd1, P_LOG_S + 7'd1: c_act = X_NORM;                                  // normalize
+            P_LOG_X + 7'd2: c_act = X_TABL;                                                  // word j
+            P_LOG_S + 7'd2: begin c_act = X_TABL; c_a = A_ZERO; c_cd = C_ALL; end            // (zeta0: 0
+            P_LOG_X + 7'd3: c_act = X_TAB1;                                                  // word j + 1
+            P_LOG_S + 7'd3: begin c_act = X_TAB1; c_a = A_ZERO; c_b = B_RF; c_cd = C_ZETA; end   // or kept)
+            P_LOG_X + 7'd4: c_act = X_W0;                                                    // w0 = word j
+            P_LOG_S + 7'd4: begin c_act = X_W0; c_rw = 1'b1; c_wa = R_ZETA; end
+            P_LOG_X + 7'd5, P_LOG_S + 7'd5: begin c_a = A_ZERO; c_b = B_TABW; c_cd = C_ALL; end   // word j + 1
+            P_LOG_X + 7'd6, P_LOG_S + 7'd6: begin c_b = B_W0; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end  // tdiff
+            P_LOG_X + 7'd8, P_LOG_S + 7'd8: begin c_a = A_ZERO; c_b = B_TPH; c_ci = 1'b1; c_cd = C_ALL; end  // (p >> RB-1) + 1
+            P_LOG_X + 7'd9, P_LOG_S + 7'd9: begin c_a = A_SHR; c_b = B_W0; c_cd = C_ALL; end  // w0 + round(p / 2^RB)
+            P_LOG_X + 7'd10, P_LOG_S + 7'd10: begin c_b = B_ELF; c_cd = C_ALL; end            // + e 2^LF: log2
+            7'd28: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_cd = C_ALL; end             // la = off - log2 x
+            7'd29: c_fl = FL_NEG;                                                            // la < 0
+            7'd30: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_fl = FL_BIG; end            // la > LA_MAX
+            7'd31: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_BIG; end
+            7'd32: begin c_a = A_ZERO; c_cd = C_ZLA; end
+            P_LOG_S: begin c_rw = 1'b1; c_wa = R_LAV; c_act = X_LGS; end                     // log2 Is
+            7'd44: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end             // lis = log2 Is - frac
+            7'd45: begin c_a = A_ZERO; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_LIS; end
+            P_HORNER, P_HORNER + 7'd1, P_HORNER + 7'd2, P_HORNER + 7'd3, P_HORNER + 7'd4, P_HORNER + 7'd5,
+            P_HORNER + 7'd6, P_HORNER + 7'd7, P_HORNER + 7'd8, P_HORNER + 7'd9:
+                begin c_a = A_SHL; c_b = B_RF; c_g = 1'b1; c_cd = C_ALL; end                  // 2 ACC + n_k la_v
+            7'd56: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end             // p = n la - lis
+            P_EXP: begin c_ib = 1'b1; c_fl = FL_SAT; c_act = X_TABE; end                     // p <= 0; word j
+            7'd58: c_act = X_TAB1;
+            7'd59: c_act = X_W0;
+            7'd60: begin c_a = A_ZERO; c_b = B_W0; c_cd = C_ALL; end
+            7'd61: begin c_b = B_TABW; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end           // tdiff
+            7'd63: begin c_a = A_ZERO; c_b = B_TPH; c_ci = 1'b1; c_cd = C_ALL; end
+            7'd64: begin c_a = A_SHR; c_ia = 1'b1; c_b = B_W0; c_ci = 1'b1; c_cd = C_ALL; end   // 2^-f
+            7'd65: begin c_a = A_SHR; c_act = X_SHIFT; end                                   // >> (shift - 1)
+            7'd66: begin c_ci = 1'b1; c_cd = C_ALL; end                                      // + 1
+            7'd67: begin c_a = A_SHR; c_cd = C_ALL; end                                      // >> 1
+            P_OUT: c_act = X_OUT;
+            default: ;                                                                       // products (24, 40, 62)
+        endcase
     end
+    generate
+        if (N_W != 10) begin : g_n_w   // the program has ten multiplication steps (P_HORNER .. 55)
+            spec_parameter_error_setup_backend_needs_N_W_10 program_has_ten_multiplication_steps ();
+        end
+    endgenerate
     // the register file word each step reads (addressed one step ahead)
     function [3:0] ra_of(input [6:0] p, input fl);
         begin
@@ -209,6 +198,7 @@ module spec_setup_backend #(
                 7'd28: ra_of = fl ? R_OFFF : R_OFF;
                 7'd30, 7'd31: ra_of = R_LAMAX;
                 7'd44: ra_of = R_STRF;
+                P_LOG_S + 7'd3, P_OUT: ra_of = R_ZETA;
                 7'd56: ra_of = R_LIS;
                 default: ra_of = R_LAV;                                                      // the products
             endcase
@@ -269,6 +259,7 @@ module spec_setup_backend #(
             C_LO: cond = f_lo;
             C_BIG: cond = f_big;
             C_ZLA: cond = !xpos || f_neg;
+            C_ZETA: cond = !s_bad && !flat;
             default: cond = 1'b0;
         endcase
     end
@@ -302,8 +293,9 @@ module spec_setup_backend #(
     assign m_n = s_n;
     assign m_l = s_l;
     assign m_dzeta = dnq[ANG_W-1:0];
+    assign m_zeta0 = rd[S +: ANG_W];         // word R_ZETA while the descriptor waits (step P_OUT)
     wire unused_bits;
-    assign unused_bits = &{1'b0, tprod[RB-2:0], hidx[6:4], dnq[ZW-1:ANG_W]};
+    assign unused_bits = &{1'b0, tprod[RB-2:0], hidx[6:4], dnq[ZW-1:ANG_W], rd[PW-1:S+ANG_W], rd[S-1:0]};
 
     // the register file: a registered read of the next step's word; a step's write takes ACC before the step
     assign rf_ra = ra_of(pc_next, flat);
@@ -335,8 +327,6 @@ module spec_setup_backend #(
             case (c_act)
                 X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);   // lz: gamma at the start
                 X_LGX, X_LGS: begin
-                    // zeta0 = (z0 + 2^(S-1)) >>> S, in ACC's bits (0 for flat and invalid spans)
-                    if (c_act == X_LGX) m_zeta0 <= (s_bad || flat) ? {ANG_W{1'b0}} : acc[S +: ANG_W];
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
                     if (c_act == X_LGX) xpos <= flat ? c1_pos : (!mag[W-1] && mag != {W{1'b0}});

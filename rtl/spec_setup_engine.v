@@ -1,16 +1,18 @@
 // spec_setup_engine - spec_setup's arithmetic one span at a time through shared units, for small FPGAs
-// (the iCE40 UP5K): one CORDIC lane (two coordinates, the angle lane, the gain adder for the third
-// coordinate), a vector memory (block RAM), one log2 / exp2 table each read twice per lookup, a multiplier
-// for the interpolations, a serial divider. The same integer operations as spec_setup_pipe in the same order,
-// so the same descriptors and flags bit for bit (SetupModel::run).
+// (the iCE40 UP5K; docs/setup.md): the vectors in a memory (block RAM), one CORDIC lane (two coordinates,
+// the angle lane, the gain adder for the third coordinate) for the passes and the angles, then
+// spec_setup_backend (one adder driven by a micro-program) for everything after the angles. The same integer
+// operations as spec_setup_pipe in the same order, so the same descriptors and flags bit for bit
+// (SetupModel::run).
 //
 // A pass with k lanes is k runs of the lane: the driving vector first (its micro-rotation directions are
 // recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector
 // (3 clocks, + 1 for the memory), ITERS micro-rotations with the gain terms of t added beside them, write
-// a, b, t back (3 clocks). The runs (P1..Q1, the angles) are the table `run_*` below.
+// a, b, t back (3 clocks; not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below.
+// The back end starts when gamma is in the angle lane and takes lambda when the last run is done.
 //
 // Handshake: s_tready is 1 while idle (a register); m_tvalid and the output fields are registers and hold until
-// m_tready; a finished span waits for the output register to be free. rst: back to idle, output empty.
+// m_tready; the next span is taken once the descriptor has been handed over. rst: back to idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -122,7 +124,6 @@ module spec_setup_engine #(
     reg [N_W-1:0] n_reg;
     reg [L_W-1:0] l_reg;
     reg rule_reg, bad, exact_opp, opp;
-    reg signed [W-1:0] c1;
 
     // the vectors into the vector memory, one component a clock: the input vectors are shifted out of vec_in,
     // every component shifted left by its vector's common amount (SetupModel::prescale) in one shifter; then
@@ -325,7 +326,7 @@ module spec_setup_engine #(
                 end
                 ST_WR: begin
                     ph <= ph + 4'd1;
-                    v_we <= 1'b1;
+                    v_we <= run_role != 2'd2;   // the angle runs keep their vectors (M1.z stays cos theta1)
                     if (ph == 4'd0 && tc_last[1]) acc <= acc + (lts ^ {W{tc_last[0]}}) + {{(W - 1) {1'b0}}, tc_last[0]};
                     case (ph)
                         4'd0: begin
@@ -358,7 +359,6 @@ module spec_setup_engine #(
                         if (run == 5'd6) exact_opp <= la[W-1] && lb_small && acc_small;
                         // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
                         if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
-                        if (run == 5'd21) c1 <= acc;
                         // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
                         if (run == 5'd22) be_start <= 1'b1;
                     end
@@ -373,7 +373,10 @@ module spec_setup_engine #(
                     end
                 end
                 // the back end (spec_setup_backend) makes the descriptor; lambda and A stay in lz and la
-                ST_BE: if (be_done) st <= ST_IDLE;
+                ST_BE: begin
+                    v_ra <= {3'd5, 2'd2};       // M1.z after Q1 for the back end: cos(theta1) * 2^F / G
+                    if (be_done) st <= ST_IDLE;
+                end
                 default: st <= ST_IDLE;
             endcase
         end
@@ -383,7 +386,7 @@ module spec_setup_engine #(
         .F(F), .W(W), .ZW(ZW), .ZF(ZF), .LF(LF), .EF(EF), .TB(TB), .RB(RB), .STR_W(STR_W), .STR_FRAC(STR_FRAC),
         .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_back (
-        .clk(clk), .rst(rst), .start(be_start), .lam_ok(st == ST_BE), .done(be_done), .lz(lz), .mag(la), .c1(c1),
+        .clk(clk), .rst(rst), .start(be_start), .lam_ok(st == ST_BE), .done(be_done), .lz(lz), .mag(la), .c1(v_rd),
         .s_str(s_reg), .s_n(n_reg), .s_l(l_reg), .s_rule(rule_reg), .s_bad(bad), .s_opp(opp),
         .m_tvalid(m_tvalid), .m_tready(m_tready), .m_c(m_c), .m_n(m_n), .m_l(m_l), .m_zeta0(m_zeta0),
         .m_dzeta(m_dzeta), .m_flags(m_flags)
