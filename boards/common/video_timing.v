@@ -1,0 +1,81 @@
+// video_timing - the raster of a video mode: horizontal and vertical counters, sync pulses and data enable.
+//
+// Counters: h = 0 .. H_TOTAL-1, v = 0 .. V_TOTAL-1; (h, v) = (0, 0) is the first active pixel, so the active
+// area is h < H_ACTIVE, v < V_ACTIVE, followed by front porch, sync and back porch on each axis (VESA DMT,
+// CTA-861). The counters advance once per clock with ce = 1 (the pixel clock enable; tie ce high when the
+// clock is the pixel clock). hsync, vsync and de are registers that belong to the same (h, v) as the
+// counters in the same cycle. H_POL / V_POL = 1: the pulse is high (positive), 0: low (negative).
+// Reset: rst_n is synchronous, active low; it puts the raster at (0, V_ACTIVE), the first line of the
+// vertical front porch, so that V_FP + V_SYNC + V_BP blanking lines pass before the first active line.
+`timescale 1ns / 1ps
+`default_nettype none
+module video_timing #(
+    parameter H_ACTIVE = 640,
+    parameter H_FP = 16,
+    parameter H_SYNC = 96,
+    parameter H_BP = 48,
+    parameter V_ACTIVE = 480,
+    parameter V_FP = 10,
+    parameter V_SYNC = 2,
+    parameter V_BP = 33,
+    parameter H_POL = 0,
+    parameter V_POL = 0,
+    parameter X_W = 11,     // width of h: H_TOTAL must fit
+    parameter Y_W = 10      // width of v: V_TOTAL must fit
+) (
+    input  wire           clk,
+    input  wire           rst_n,
+    input  wire           ce,
+    output reg  [X_W-1:0] h,
+    output reg  [Y_W-1:0] v,
+    output reg            hsync,
+    output reg            vsync,
+    output reg            de
+);
+    localparam H_TOTAL = H_ACTIVE + H_FP + H_SYNC + H_BP;
+    localparam V_TOTAL = V_ACTIVE + V_FP + V_SYNC + V_BP;
+    localparam [X_W-1:0] H_LAST = H_TOTAL - 1;
+    localparam [Y_W-1:0] V_LAST = V_TOTAL - 1;
+    localparam [X_W-1:0] HS_BEGIN = H_ACTIVE + H_FP;
+    localparam [X_W-1:0] HS_END = H_ACTIVE + H_FP + H_SYNC;
+    localparam [Y_W-1:0] VS_BEGIN = V_ACTIVE + V_FP;
+    localparam [Y_W-1:0] VS_END = V_ACTIVE + V_FP + V_SYNC;
+    localparam [X_W-1:0] H_ACT = H_ACTIVE;
+    localparam [Y_W-1:0] V_ACT = V_ACTIVE;
+
+    // misconfiguration stops elaboration (every tool) and simulation (with a message)
+    generate
+        if (H_ACTIVE < 1 || H_FP < 1 || H_SYNC < 1 || H_BP < 1 || V_ACTIVE < 1 || V_FP < 1 || V_SYNC < 1
+            || V_BP < 1 || H_TOTAL >= (1 << X_W) || V_TOTAL >= (1 << Y_W)) begin : g_bad_params
+            initial begin
+                $display("video_timing: every interval must be >= 1 and the totals must fit X_W / Y_W (%m)");
+                $finish;
+            end
+            video_timing_parameters_out_of_range u_error ();
+        end
+    endgenerate
+
+    wire h_wrap = (h == H_LAST);
+    wire [X_W-1:0] h_d = h_wrap ? {X_W{1'b0}} : h + {{(X_W - 1) {1'b0}}, 1'b1};
+    wire [Y_W-1:0] v_d = !h_wrap ? v : (v == V_LAST) ? {Y_W{1'b0}} : v + {{(Y_W - 1) {1'b0}}, 1'b1};
+    wire hs_d = (h_d >= HS_BEGIN) && (h_d < HS_END);
+    wire vs_d = (v_d >= VS_BEGIN) && (v_d < VS_END);
+    wire de_d = (h_d < H_ACT) && (v_d < V_ACT);
+
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            h <= {X_W{1'b0}};
+            v <= V_ACT;
+            hsync <= (H_POL == 0);
+            vsync <= (V_POL == 0);
+            de <= 1'b0;
+        end else if (ce) begin
+            h <= h_d;
+            v <= v_d;
+            hsync <= hs_d ^ (H_POL == 0);
+            vsync <= vs_d ^ (V_POL == 0);
+            de <= de_d;
+        end
+    end
+endmodule
+`default_nettype wire

@@ -1,0 +1,58 @@
+// icebreaker_prims - every iCE40-specific primitive of the iCEBreaker reference design, so that the rest
+// (boards/common/) is plain Verilog: the PLL and the registered I/O cells of the DVI Pmod's pins.
+// Synthesis uses the iCE40 cells (Lattice iCE40 Technology Library: SB_PLL40_PAD, SB_IO); simulation uses
+// the models in boards/icebreaker/sim/.
+`timescale 1ns / 1ps
+`default_nettype none
+
+// icebreaker_pll - 12 MHz from the board's oscillator (pin 35, the PLL's input pad) to the design clock.
+// SB_PLL40_PAD, simple feedback: F_out = 12 MHz x (DIVF + 1) / ((DIVR + 1) x 2^DIVQ) with the VCO
+// (12 MHz x (DIVF + 1) / (DIVR + 1)) within 533..1066 MHz: DIVR = 0, DIVF = 66, DIVQ = 4 give
+// 12 x 67 / 16 = 50.25 MHz (VCO 804 MHz), twice the pixel clock of 25.125 MHz (VESA: 25.175 MHz, -0.2 %).
+// FILTER_RANGE = 1 for the 12 MHz phase detector input.
+module icebreaker_pll (
+    input  wire pin_12mhz,
+    output wire clk,
+    output wire locked
+);
+    SB_PLL40_PAD #(
+        .FEEDBACK_PATH("SIMPLE"),
+        .DIVR(4'd0),
+        .DIVF(7'd66),
+        .DIVQ(3'd4),
+        .FILTER_RANGE(3'd1)
+    ) u_pll (
+        .PACKAGEPIN(pin_12mhz),
+        .PLLOUTCORE(),
+        .PLLOUTGLOBAL(clk),
+        .RESETB(1'b1),
+        .BYPASS(1'b0),
+        .LOCK(locked)
+    );
+endmodule
+
+// icebreaker_dvi_pins - the 16 pins of the 12-bit DVI Pmod, each driven from the output flip-flop of its
+// I/O cell (SB_IO, PIN_TYPE 0101_01: registered output, no output enable), so that all pins switch together
+// at the pad. data = {r[3:0], g[3:0], b[3:0], hsync, vsync, de} is loaded in cycles with load = 1;
+// pin_clk is loaded every cycle with clk_next (the pixel clock, built from the doubled clock).
+module icebreaker_dvi_pins (
+    input  wire        clk,
+    input  wire        load,
+    input  wire [14:0] data,
+    input  wire        clk_next,
+    output wire [14:0] pins,
+    output wire        pin_clk
+);
+    genvar i;
+    generate
+        for (i = 0; i < 15; i = i + 1) begin : g_pin
+            SB_IO #(.PIN_TYPE(6'b0101_01)) u_io (
+                .PACKAGE_PIN(pins[i]), .CLOCK_ENABLE(load), .OUTPUT_CLK(clk), .D_OUT_0(data[i])
+            );
+        end
+    endgenerate
+    SB_IO #(.PIN_TYPE(6'b0101_01)) u_clk (
+        .PACKAGE_PIN(pin_clk), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(clk_next)
+    );
+endmodule
+`default_nettype wire

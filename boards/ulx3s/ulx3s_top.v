@@ -1,0 +1,94 @@
+// ulx3s_top - the ULX3S reference design (docs/boards.md): the lit, animated sphere scene on the GPDI
+// (HDMI-shaped, DVI-signalled) connector, 640 x 480 at 60 Hz (MODE720 = 0) or 1280 x 720 at 60 Hz
+// (MODE720 = 1), TMDS-encoded in the FPGA.
+//
+// Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
+//   clk_pix  the pixel clock: the whole of board_core (one shader per pass, one pixel per clock) and the
+//            three TMDS encoders;
+//   clk_bit  5 x the pixel clock: the serializer and the DDR output registers (10 bits per pixel).
+// Crossings (docs/boards.md, "Clock domains"): the encoders' characters and a toggle, pixel -> bit domain,
+// through tmds_serializer (toggle synchronizer, characters sampled at a fixed phase while stable); the reset,
+// pixel -> bit domain, through cdc_sync. Nothing crosses back but the status LED.
+// Reset: the PLL's lock and the power button (btn[0], low while pressed), synchronized.
+// LEDs: led[0] = a line was not rendered in time (sticky), led[1] = the serializer lost step with the pixel
+// clock (sticky), led[7] blinks with the frame counter.
+`timescale 1ns / 1ps
+`default_nettype none
+`include "board_params.vh"
+module ulx3s_top #(
+    parameter MODE720 = 0,
+    parameter SPLIT_K = 32,
+    // boardgen's tables and the core's ROM images (up5k configuration); the flows pass absolute paths
+    parameter SCENE_FILE = "boards/common/gen/scene_640x480.hex",
+    parameter SPLIT_FILE = "boards/common/gen/split_32.hex",
+    parameter OBJ_FILE = "boards/common/gen/objects_640x480.hex",
+    parameter SHADE_FILE = "boards/common/gen/shade_640x480.hex",
+    parameter SIN_FILE = "boards/common/gen/light_sin.hex",
+    parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
+    parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex"
+) (
+    input  wire       clk_25mhz,
+    input  wire [6:0] btn,
+    output wire [7:0] led,
+    output wire [3:0] gpdi_dp
+);
+    // the two rasters (VESA DMT 640x480@60, CTA-861 VIC 4 1280x720@60), from boardgen
+    localparam H_ACTIVE = MODE720 ? `BOARD1280_H_ACTIVE : `BOARD640_H_ACTIVE;
+    localparam H_FP = MODE720 ? `BOARD1280_H_FP : `BOARD640_H_FP;
+    localparam H_SYNC = MODE720 ? `BOARD1280_H_SYNC : `BOARD640_H_SYNC;
+    localparam H_BP = MODE720 ? `BOARD1280_H_BP : `BOARD640_H_BP;
+    localparam V_ACTIVE = MODE720 ? `BOARD1280_V_ACTIVE : `BOARD640_V_ACTIVE;
+    localparam V_FP = MODE720 ? `BOARD1280_V_FP : `BOARD640_V_FP;
+    localparam V_SYNC = MODE720 ? `BOARD1280_V_SYNC : `BOARD640_V_SYNC;
+    localparam V_BP = MODE720 ? `BOARD1280_V_BP : `BOARD640_V_BP;
+    localparam H_POL = MODE720 ? `BOARD1280_H_POL : `BOARD640_H_POL;
+    localparam V_POL = MODE720 ? `BOARD1280_V_POL : `BOARD640_V_POL;
+
+    wire clk_bit, clk_pix, locked;
+    ulx3s_pll #(.MODE720(MODE720)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_pix(clk_pix),
+                                          .locked(locked));
+    wire rst_n, rst_bit_n;
+    cdc_sync #(.STAGES(2)) u_rst (.clk(clk_pix), .rst_n(locked), .d(btn[0]), .q(rst_n));
+    cdc_sync #(.STAGES(2)) u_rst_bit (.clk(clk_bit), .rst_n(locked), .d(rst_n), .q(rst_bit_n));
+
+    wire [23:0] rgb;
+    wire hs, vs, de, late;
+    wire [7:0] frame;
+    board_core #(
+        .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE), .V_FP(V_FP),
+        .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
+        .OUT_BITS(8), .BG_RGB(`BOARD_BG_RGB8),
+        .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
+        .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
+        .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
+        .MUL_STEPS(9), .SQRT_STEPS(7), .SHADERS(2), .SHADER_SMALL(0),
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+    ) u_core (
+        .clk(clk_pix), .rst_n(rst_n), .pix_ce(1'b1), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
+        .frame(frame)
+    );
+
+    // TMDS: blue carries the syncs in its control characters (DVI 1.0)
+    wire [9:0] q_r, q_g, q_b;
+    tmds_encoder u_enc_b (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c({vs, hs}), .d(rgb[7:0]), .q(q_b));
+    tmds_encoder u_enc_g (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c(2'b00), .d(rgb[15:8]), .q(q_g));
+    tmds_encoder u_enc_r (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c(2'b00), .d(rgb[23:16]), .q(q_r));
+    reg tgl;
+    always @(posedge clk_pix) begin
+        if (!rst_n) tgl <= 1'b0;
+        else tgl <= ~tgl;
+    end
+
+    wire [7:0] pairs;
+    wire out_of_step;
+    tmds_serializer u_ser (
+        .clk(clk_bit), .rst_n(rst_bit_n), .chars({q_r, q_g, q_b}), .load_tgl(tgl), .pairs(pairs),
+        .out_of_step(out_of_step)
+    );
+    ulx3s_gpdi_pins u_pins (.clk_bit(clk_bit), .pairs(pairs), .gpdi_dp(gpdi_dp));
+
+    assign led = {frame[5], 5'd0, out_of_step, late};
+    wire unused_btn;
+    assign unused_btn = &{1'b0, btn[6:1]};
+endmodule
+`default_nettype wire
