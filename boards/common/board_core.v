@@ -156,6 +156,20 @@ module board_core #(
         if (!rst_n) late <= 1'b0;
         else if (swap_ev && rendering) late <= 1'b1;
     end
+    // for the board simulation's report (docs/boards.md, "Time per line"): the longest time a line took, in
+    // clocks from its start to its last pixel written (not connected to pins: synthesis removes it)
+    reg [12:0] render_clocks;
+    reg [12:0] render_clocks_max /*verilator public_flat_rd*/;
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            render_clocks <= 13'd0;
+            render_clocks_max <= 13'd0;
+        end else begin
+            if (render_ev) render_clocks <= 13'd1;
+            else if (rendering && render_clocks != 13'h1fff) render_clocks <= render_clocks + 13'd1;
+            if (!rendering && render_clocks > render_clocks_max) render_clocks_max <= render_clocks;
+        end
+    end
 
     // ---- line buffers and scanout ------------------------------------------------------------------------
     reg rd_q;                          // a pixel was read at the last pix_ce

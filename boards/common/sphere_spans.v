@@ -15,8 +15,10 @@
 // r2 = 2r, r2sq = r2^2. The scene generator (boardgen) checks that every sphere lies inside the picture.
 // Output: one beat per sub-span, AXI4-Stream rules (valid held, data stable until ready).
 // Handshake: start (with y) is taken while busy = 0; busy stays 1 until the line's last sub-span has been
-// accepted. Cycles: a shift-and-add multiplier and a digit-by-digit square root, shared, MUL_STEPS and
-// SQRT_STEPS bits per clock; per split point 9/MUL_STEPS (m * v) + 9/MUL_STEPS (DX^2) + 14/SQRT_STEPS + 4.
+// accepted. Three stages overlap: the point generator (a shift-and-add multiplier, MUL_STEPS bits per
+// clock: m * v_j and DX^2), the square root (digit by digit, SQRT_STEPS bits per clock) and the emitter.
+// A split point costs about max(2 (9 / MUL_STEPS + 2), 14 / SQRT_STEPS + 2) clocks; a sphere's line adds a
+// square root for its chord.
 // Reset: rst_n is synchronous, active low: idle, no output.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -36,7 +38,7 @@ module sphere_spans #(
     input  wire             rst_n,
     input  wire             start,
     input  wire [Y_W-1:0]   y,
-    output reg              busy,
+    output reg              busy,      // (combinational: any stage holds work)
     output reg              m_valid,
     input  wire             m_ready,
     output reg  [OBJ_W-1:0] m_obj,
@@ -70,7 +72,7 @@ module sphere_spans #(
         $readmemh(SPLIT_FILE, split);
     end
 
-    // ---- shared arithmetic -------------------------------------------------------------------------------
+    // ---- stage A1: spheres and split points -----------------------------------------------------------------
     reg mul_start;
     reg [R_W-1:0] mul_a, mul_b;
     wire mul_busy, mul_done;
@@ -79,20 +81,19 @@ module sphere_spans #(
         .clk(clk), .rst_n(rst_n), .start(mul_start), .a(mul_a), .b(mul_b), .busy(mul_busy), .done(mul_done),
         .p(mul_p)
     );
-    reg sq_start;
-    reg [RAD_W-1:0] sq_x;
-    wire sq_busy, sq_done;
-    wire [Z_W-1:0] sq_root;
-    isqrt #(.X_W(RAD_W), .STEPS_PER_CLK(SQRT_STEPS)) u_sqrt (
-        .clk(clk), .rst_n(rst_n), .start(sq_start), .x(sq_x), .busy(sq_busy), .done(sq_done), .root(sq_root)
-    );
-    wire unused_busy;
-    assign unused_busy = mul_busy | sq_busy;
+    // tokens toward the square root: a chord (radicand W2 << 2ZF, gives s) or a split point (gives Z).
+    // A1 -> A2: {is_point, first, obj, x0, dy, p, dx, w2}; A2 -> B: the same with the radicand for w2.
+    localparam TOK_W = 1 + 1 + OBJ_W + X_W + 13 + R_W + (R_W + 2) + RAD_W;
+    localparam A2_W = TOK_W - RAD_W + 2 * R_W;
+    reg a2_v;                          // stage A2's input register holds a token
+    reg [A2_W-1:0] a2_tok;
+    wire a2_take;                      // A2 is done with its token this cycle
+    wire a2_free = !a2_v || a2_take;
+    reg s_v;                           // stage B has returned the chord's s to stage A1
+    reg [R_W-1:0] s_q;
 
-    // ---- sequencer ---------------------------------------------------------------------------------------
-    localparam S_IDLE = 4'd0, S_OBJ = 4'd1, S_DY2 = 4'd2, S_S = 4'd3, S_P = 4'd4, S_P2 = 4'd5,
-               S_DX2 = 4'd6, S_Z = 4'd7, S_EMIT = 4'd8;
-    reg [3:0] st;
+    localparam A_IDLE = 3'd0, A_OBJ = 3'd1, A_DY2 = 3'd2, A_S = 3'd3, A_P = 3'd4, A_P2 = 3'd5, A_HAND = 3'd6;
+    reg [2:0] st;
     reg [Y_W-1:0] y_q;
     reg [OBJ_W:0] obj;
     reg signed [12:0] dy;              // 2y + 1 - 2cy
@@ -101,8 +102,9 @@ module sphere_spans #(
     reg [X_W-1:0] x0;
     reg [J_W-1:0] j;
     reg [R_W-1:0] p, p_prev;
+    reg first;                         // the next point is the chord's first
     reg signed [R_W+1:0] dx;
-    reg [47:0] n_prev;
+    reg m_chord_pending;               // A_HAND hands the chord's token (else a point's)
 
     wire [47:0] cur = scene[obj[OBJ_W-1:0]];
     wire [10:0] cur_cx = cur[47:37];
@@ -111,132 +113,238 @@ module sphere_spans #(
     wire [8:0] cur_r2 = cur[8:0];
     wire signed [12:0] dy_d = $signed({2'b00, y_q, 1'b1}) - $signed({2'b00, cur_cy, 1'b0});
     wire [12:0] ady_d = dy_d[12] ? -dy_d : dy_d;
-    wire [R_W-1:0] s_root = sq_root[Z_W-1:ZF];
-    wire [R_W-1:0] m_d = s_root[0] ? s_root : s_root - {{(R_W - 1) {1'b0}}, 1'b1};
+    wire [R_W-1:0] m_d = s_q[0] ? s_q : s_q - {{(R_W - 1) {1'b0}}, 1'b1};
     wire [R_W+F-1:0] pv = mul_p[R_W+F-1:0] + {{(R_W) {1'b0}}, 1'b1, {(F - 1) {1'b0}}};
     wire [R_W-1:0] p_d = pv[R_W+F-1:F];
     wire signed [R_W+1:0] dx_d = $signed({1'b0, p_d, 1'b0}) - $signed({2'b00, m});
-    wire [R_W+1:0] adx_d = dx_d[R_W+1] ? -dx_d : dx_d;
-    wire last_obj = (obj == N_OBJ - 1);
-    wire unused_prod;
-    assign unused_prod = &{1'b0, mul_p[2*R_W-1:R_W+F], adx_d[R_W+1:R_W], ady_d[12:R_W], pv[F-1:0]};
-    // the normal at the current split point: (dx, dy, z) * 2^ZF, 16 bits each
-    wire signed [15:0] dx16 = {{(16 - R_W - 2) {dx[R_W+1]}}, dx};
-    wire signed [15:0] dy16 = {{3{dy[12]}}, dy};
-    wire [47:0] n_cur = {{(16 - Z_W) {1'b0}}, sq_root, dy16 <<< ZF, dx16 <<< ZF};
+    localparam integer LAST_OBJ = N_OBJ - 1;
+    wire last_obj = (obj == LAST_OBJ[OBJ_W:0]);
+    wire last_j = (j == K[J_W-1:0]);
+    wire unused_a;
+    assign unused_a = &{1'b0, mul_busy, mul_p[2*R_W-1:R_W+F], ady_d[12:R_W], pv[F-1:0]};
 
     always @(posedge clk) begin
         mul_start <= 1'b0;
-        sq_start <= 1'b0;
         if (!rst_n) begin
-            st <= S_IDLE;
-            busy <= 1'b0;
-            m_valid <= 1'b0;
+            st <= A_IDLE;
+            a2_v <= 1'b0;
         end else begin
+            if (a2_take) a2_v <= 1'b0;
             case (st)
-                S_IDLE: if (start) begin
-                    busy <= 1'b1;
+                A_IDLE: if (start && !busy) begin
                     y_q <= y;
                     obj <= {(OBJ_W + 1) {1'b0}};
-                    st <= S_OBJ;
+                    st <= A_OBJ;
                 end
-                S_OBJ: begin
-                    // this sphere's line: DY, and DY^2 if the line meets it
+                A_OBJ: begin
                     dy <= dy_d;
                     if (ady_d >= {4'd0, cur_r2}) begin
-                        if (last_obj) begin
-                            busy <= 1'b0;
-                            st <= S_IDLE;
-                        end else obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                        if (last_obj) st <= A_IDLE;
+                        else obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
                     end else begin
                         mul_a <= ady_d[R_W-1:0];
                         mul_b <= ady_d[R_W-1:0];
                         mul_start <= 1'b1;
-                        st <= S_DY2;
+                        st <= A_DY2;
                     end
                 end
-                S_DY2: if (mul_done) begin
+                A_DY2: if (mul_done) begin
                     w2 <= cur_r2sq - mul_p;
-                    sq_x <= {cur_r2sq - mul_p, {(2 * ZF) {1'b0}}};
-                    sq_start <= 1'b1;
-                    st <= S_S;
+                    st <= A_HAND;          // the chord's token goes to the square root for s
                 end
-                S_S: if (sq_done) begin
-                    if (s_root == {R_W{1'b0}}) begin
-                        if (last_obj) begin
-                            busy <= 1'b0;
-                            st <= S_IDLE;
-                        end else begin
+                A_S: if (s_v) begin
+                    if (s_q == {R_W{1'b0}}) begin
+                        if (last_obj) st <= A_IDLE;
+                        else begin
                             obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
-                            st <= S_OBJ;
+                            st <= A_OBJ;
                         end
                     end else begin
                         m <= m_d;
                         x0 <= cur_cx - {{(X_W - R_W) {1'b0}}, (m_d >> 1) + {{(R_W - 1) {1'b0}}, 1'b1}};
                         j <= {J_W{1'b0}};
-                        st <= S_P;
+                        first <= 1'b1;
+                        st <= A_P;
                     end
                 end
-                S_P: begin
+                A_P: begin
                     mul_a <= m;
                     mul_b <= split[j];
                     mul_start <= 1'b1;
-                    st <= S_P2;
+                    st <= A_P2;
                 end
-                S_P2: if (mul_done) begin
+                A_P2: if (mul_done) begin
                     p <= p_d;
                     dx <= dx_d;
-                    if (j != {J_W{1'b0}} && p_d == p_prev) begin
+                    if (!first && p_d == p_prev) begin
                         // the same pixel as the previous point: no sub-span
-                        if (j == K) st <= S_EMIT;
-                        else begin
-                            j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
-                            st <= S_P;
-                        end
-                    end else begin
-                        mul_a <= adx_d[R_W-1:0];
-                        mul_b <= adx_d[R_W-1:0];
-                        mul_start <= 1'b1;
-                        st <= S_DX2;
-                    end
-                end
-                S_DX2: if (mul_done) begin
-                    sq_x <= {w2 - mul_p, {(2 * ZF) {1'b0}}};
-                    sq_start <= 1'b1;
-                    st <= S_Z;
-                end
-                S_Z: if (sq_done) begin
-                    n_prev <= n_cur;
-                    p_prev <= p;
-                    if (j != {J_W{1'b0}}) begin
-                        m_valid <= 1'b1;
-                        m_obj <= obj[OBJ_W-1:0];
-                        m_x0 <= x0 + {{(X_W - R_W) {1'b0}}, p_prev};
-                        m_l <= {{(10 - R_W) {1'b0}}, p - p_prev};
-                        m_n1 <= n_prev;
-                        m_n2 <= n_cur;
-                    end
-                    st <= S_EMIT;
-                end
-                S_EMIT: if (!m_valid || m_ready) begin
-                    // (the sub-span, if any, is accepted) next point, next sphere or the end of the line
-                    m_valid <= 1'b0;
-                    if (j == K) begin
-                        if (last_obj) begin
-                            busy <= 1'b0;
-                            st <= S_IDLE;
+                        if (last_j) begin
+                            if (last_obj) st <= A_IDLE;
+                            else begin
+                                obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                                st <= A_OBJ;
+                            end
                         end else begin
-                            obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
-                            st <= S_OBJ;
+                            j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
+                            st <= A_P;
                         end
+                    end else st <= A_HAND;
+                end
+                A_HAND: if (a2_free) begin
+                    // hand the chord (after A_DY2) or the point (after A_P2) to A2
+                    a2_v <= 1'b1;
+                    if (m_chord_pending) begin
+                        a2_tok <= {1'b0, 1'b0, {OBJ_W{1'b0}}, {X_W{1'b0}}, 13'd0, {R_W{1'b0}}, {(R_W + 2) {1'b0}}, w2};
+                        st <= A_S;
                     end else begin
-                        j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
-                        st <= S_P;
+                        a2_tok <= {1'b1, first, obj[OBJ_W-1:0], x0, dy, p, dx, w2};
+                        p_prev <= p;
+                        first <= 1'b0;
+                        if (last_j) begin
+                            if (last_obj) st <= A_IDLE;
+                            else begin
+                                obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                                st <= A_OBJ;
+                            end
+                        end else begin
+                            j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
+                            st <= A_P;
+                        end
                     end
                 end
-                default: st <= S_IDLE;
+                default: st <= A_IDLE;
             endcase
         end
     end
+    // A_HAND after A_DY2 hands the chord, after A_P2 a point
+    always @(posedge clk) begin
+        if (st == A_DY2) m_chord_pending <= 1'b1;
+        else if (st == A_P2) m_chord_pending <= 1'b0;
+    end
+
+    // ---- stage A2: DX^2 for a point's radicand --------------------------------------------------------------
+    reg b_v;                           // stage B's input register holds a token
+    reg [TOK_W-1:0] b_tok;             // {is_point, first, obj, x0, dy, p, dx, radicand}
+    wire b_take;                       // stage B takes its token into the square root
+    wire b_free = !b_v || b_take;
+    reg mul2_start;
+    wire mul2_busy, mul2_done;
+    wire [2*R_W-1:0] mul2_p;
+    wire a2_point = a2_tok[A2_W-1];
+    wire signed [R_W+1:0] a2_dx = a2_tok[2*R_W +: R_W + 2];
+    wire [R_W+1:0] a2_adx = a2_dx[R_W+1] ? -a2_dx : a2_dx;
+    wire [2*R_W-1:0] a2_w2 = a2_tok[2*R_W-1:0];
+    seq_mul #(.A_W(R_W), .B_W(R_W), .STEPS_PER_CLK(MUL_STEPS)) u_mul2 (
+        .clk(clk), .rst_n(rst_n), .start(mul2_start), .a(a2_adx[R_W-1:0]), .b(a2_adx[R_W-1:0]), .busy(mul2_busy),
+        .done(mul2_done), .p(mul2_p)
+    );
+    reg a2_sq;                         // the token's DX^2 is ready (or not needed: a chord)
+    assign a2_take = a2_v && a2_sq && b_free;
+    always @(posedge clk) begin
+        mul2_start <= 1'b0;
+        if (!rst_n) begin
+            a2_sq <= 1'b0;
+            b_v <= 1'b0;
+        end else begin
+            if (b_take) b_v <= 1'b0;
+            // a token arrives: a chord needs nothing, a point starts its DX^2
+            if (a2_free && st == A_HAND) begin
+                a2_sq <= m_chord_pending;
+                mul2_start <= !m_chord_pending;
+            end else if (mul2_done) a2_sq <= 1'b1;
+            if (a2_take) begin
+                b_v <= 1'b1;
+                b_tok <= {a2_tok[A2_W-1:2*R_W], a2_point ? a2_w2 - mul2_p : a2_w2, {(2 * ZF) {1'b0}}};
+            end
+        end
+    end
+    wire unused_a2;
+    assign unused_a2 = &{1'b0, mul2_busy, a2_adx[R_W+1:R_W]};
+
+    // ---- stage B: the square root ----------------------------------------------------------------------
+    wire sq_busy, sq_done;
+    wire [Z_W-1:0] sq_root;
+    reg [TOK_W-RAD_W-1:0] sq_tag;      // the token's fields other than the radicand, while its root runs
+    reg sq_run;                        // a token is in the square root
+    assign b_take = b_v && !sq_run;
+    isqrt #(.X_W(RAD_W), .STEPS_PER_CLK(SQRT_STEPS)) u_sqrt (
+        .clk(clk), .rst_n(rst_n), .start(b_take), .x(b_tok[RAD_W-1:0]), .busy(sq_busy), .done(sq_done),
+        .root(sq_root)
+    );
+    // stage C's input register: {first, obj, x0, dy, p, dx, z}
+    localparam C_W = 1 + OBJ_W + X_W + 13 + R_W + (R_W + 2) + Z_W;
+    reg c_v;
+    reg [C_W-1:0] c_tok;
+    wire c_take;
+    wire tag_point = sq_tag[TOK_W-RAD_W-1];
+    // a finished root leaves when its destination is free: stage A (s) always, stage C (z) when c_v is free
+    wire sq_leave = sq_run && sq_done_q && (!tag_point || !c_v || c_take);
+    reg sq_done_q;                     // the root is ready (held until it leaves)
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            sq_run <= 1'b0;
+            sq_done_q <= 1'b0;
+            s_v <= 1'b0;
+            c_v <= 1'b0;
+        end else begin
+            s_v <= 1'b0;
+            if (c_take) c_v <= 1'b0;
+            if (b_take) begin
+                sq_run <= 1'b1;
+                sq_tag <= b_tok[TOK_W-1:RAD_W];
+            end
+            if (sq_done) sq_done_q <= 1'b1;
+            if (sq_leave) begin
+                sq_run <= 1'b0;
+                sq_done_q <= 1'b0;
+                if (tag_point) begin
+                    c_v <= 1'b1;
+                    c_tok <= {sq_tag[TOK_W-RAD_W-2:0], sq_root};
+                end else begin
+                    s_v <= 1'b1;
+                    s_q <= sq_root[Z_W-1:ZF];
+                end
+            end
+        end
+    end
+    wire unused_b;
+    assign unused_b = &{1'b0, sq_busy};
+
+    // ---- stage C: sub-spans from consecutive points -----------------------------------------------------
+    wire c_first = c_tok[C_W-1];
+    wire [OBJ_W-1:0] c_obj = c_tok[C_W-2 -: OBJ_W];
+    wire [X_W-1:0] c_x0 = c_tok[C_W-2-OBJ_W -: X_W];
+    wire signed [12:0] c_dy = c_tok[C_W-2-OBJ_W-X_W -: 13];
+    wire [R_W-1:0] c_p = c_tok[Z_W+R_W+2 +: R_W];
+    wire signed [R_W+1:0] c_dx = c_tok[Z_W +: R_W + 2];
+    wire [Z_W-1:0] c_z = c_tok[Z_W-1:0];
+    // the normal at the point: (dx, dy, z) * 2^ZF, 16 bits each
+    wire signed [15:0] dx16 = {{(16 - R_W - 2) {c_dx[R_W+1]}}, c_dx};
+    wire signed [15:0] dy16 = {{3{c_dy[12]}}, c_dy};
+    wire [47:0] n_cur = {{(16 - Z_W) {1'b0}}, c_z, dy16 <<< ZF, dx16 <<< ZF};
+    reg [47:0] n_prev;
+    reg [R_W-1:0] cp_prev;
+    assign c_take = c_v && (!m_valid || m_ready);
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            m_valid <= 1'b0;
+        end else begin
+            if (m_valid && m_ready) m_valid <= 1'b0;
+            if (c_take) begin
+                n_prev <= n_cur;
+                cp_prev <= c_p;
+                if (!c_first) begin
+                    m_valid <= 1'b1;
+                    m_obj <= c_obj;
+                    m_x0 <= c_x0 + {{(X_W - R_W) {1'b0}}, cp_prev};
+                    m_l <= {{(10 - R_W) {1'b0}}, c_p - cp_prev};
+                    m_n1 <= n_prev;
+                    m_n2 <= n_cur;
+                end
+            end
+        end
+    end
+
+    always @(*) busy = (st != A_IDLE) || a2_v || b_v || sq_run || c_v || m_valid;
 endmodule
 `default_nettype wire

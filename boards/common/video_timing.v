@@ -4,7 +4,10 @@
 // area is h < H_ACTIVE, v < V_ACTIVE, followed by front porch, sync and back porch on each axis (VESA DMT,
 // CTA-861). The counters advance once per clock with ce = 1 (the pixel clock enable; tie ce high when the
 // clock is the pixel clock). hsync, vsync and de are registers that belong to the same (h, v) as the
-// counters in the same cycle. H_POL / V_POL = 1: the pulse is high (positive), 0: low (negative).
+// counters in the same cycle. vsync's edges coincide with hsync's leading edge: it is active from the hsync
+// of line V_ACTIVE + V_FP - 1 to the hsync of line V_ACTIVE + V_FP + V_SYNC - 1, i.e. for the V_SYNC lines
+// V_ACTIVE + V_FP .. counted from one hsync to the next. H_POL / V_POL = 1: the pulse is high (positive),
+// 0: low (negative).
 // Reset: rst_n is synchronous, active low; it puts the raster at (0, V_ACTIVE), the first line of the
 // vertical front porch, so that V_FP + V_SYNC + V_BP blanking lines pass before the first active line.
 `timescale 1ns / 1ps
@@ -59,7 +62,10 @@ module video_timing #(
     wire [X_W-1:0] h_d = h_wrap ? {X_W{1'b0}} : h + {{(X_W - 1) {1'b0}}, 1'b1};
     wire [Y_W-1:0] v_d = !h_wrap ? v : (v == V_LAST) ? {Y_W{1'b0}} : v + {{(Y_W - 1) {1'b0}}, 1'b1};
     wire hs_d = (h_d >= HS_BEGIN) && (h_d < HS_END);
-    wire vs_d = (v_d >= VS_BEGIN) && (v_d < VS_END);
+    // vsync switches with the hsync leading edge (CTA-861 and VESA DMT draw a line from one hsync to the
+    // next): the line a position belongs to for vsync is v + 1 from the hsync on
+    wire [Y_W-1:0] v_sync_line = (h_d < HS_BEGIN) ? v_d : (v_d == V_LAST) ? {Y_W{1'b0}} : v_d + {{(Y_W - 1) {1'b0}}, 1'b1};
+    wire vs_d = (v_sync_line >= VS_BEGIN) && (v_sync_line < VS_END);
     wire de_d = (h_d < H_ACT) && (v_d < V_ACT);
 
     always @(posedge clk) begin

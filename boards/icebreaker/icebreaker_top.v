@@ -12,6 +12,7 @@
 `default_nettype none
 `include "board_params.vh"
 module icebreaker_top #(
+    parameter TEST = 0,      // 1: the 128 x 96 test raster of the quick board simulation (make test)
     // boardgen's tables and the core's ROM images (up5k configuration); the flows pass absolute paths
     parameter SCENE_FILE = "boards/common/gen/scene_640x480.hex",
     parameter SPLIT_K = 16,
@@ -46,13 +47,23 @@ module icebreaker_top #(
         else pix_ce <= ~pix_ce;
     end
 
+    localparam H_ACTIVE = TEST ? `BOARD128_H_ACTIVE : `BOARD640_H_ACTIVE;
+    localparam H_FP = TEST ? `BOARD128_H_FP : `BOARD640_H_FP;
+    localparam H_SYNC = TEST ? `BOARD128_H_SYNC : `BOARD640_H_SYNC;
+    localparam H_BP = TEST ? `BOARD128_H_BP : `BOARD640_H_BP;
+    localparam V_ACTIVE = TEST ? `BOARD128_V_ACTIVE : `BOARD640_V_ACTIVE;
+    localparam V_FP = TEST ? `BOARD128_V_FP : `BOARD640_V_FP;
+    localparam V_SYNC = TEST ? `BOARD128_V_SYNC : `BOARD640_V_SYNC;
+    localparam V_BP = TEST ? `BOARD128_V_BP : `BOARD640_V_BP;
+    localparam H_POL = TEST ? `BOARD128_H_POL : `BOARD640_H_POL;
+    localparam V_POL = TEST ? `BOARD128_V_POL : `BOARD640_V_POL;
+
     wire [11:0] rgb;
     wire hs, vs, de, late;
     wire [7:0] frame;
     board_core #(
-        .H_ACTIVE(`BOARD640_H_ACTIVE), .H_FP(`BOARD640_H_FP), .H_SYNC(`BOARD640_H_SYNC), .H_BP(`BOARD640_H_BP),
-        .V_ACTIVE(`BOARD640_V_ACTIVE), .V_FP(`BOARD640_V_FP), .V_SYNC(`BOARD640_V_SYNC), .V_BP(`BOARD640_V_BP),
-        .H_POL(`BOARD640_H_POL), .V_POL(`BOARD640_V_POL),
+        .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE), .V_FP(V_FP),
+        .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
         .OUT_BITS(4), .BG_RGB(`BOARD_BG_RGB4),
         .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),

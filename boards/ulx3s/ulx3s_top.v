@@ -1,6 +1,6 @@
 // ulx3s_top - the ULX3S reference design (docs/boards.md): the lit, animated sphere scene on the GPDI
-// (HDMI-shaped, DVI-signalled) connector, 640 x 480 at 60 Hz (MODE720 = 0) or 1280 x 720 at 60 Hz
-// (MODE720 = 1), TMDS-encoded in the FPGA.
+// (HDMI-shaped, DVI-signalled) connector, 640 x 480 at 60 Hz (MODE = 0) or 1280 x 720 at 60 Hz (MODE = 1),
+// TMDS-encoded in the FPGA; MODE = 2 is the 128 x 96 test raster of the quick board simulation (make test).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
 //   clk_pix  the pixel clock: the whole of board_core (one shader per pass, one pixel per clock) and the
@@ -16,7 +16,7 @@
 `default_nettype none
 `include "board_params.vh"
 module ulx3s_top #(
-    parameter MODE720 = 0,
+    parameter MODE = 0,
     parameter SPLIT_K = 32,
     // boardgen's tables and the core's ROM images (up5k configuration); the flows pass absolute paths
     parameter SCENE_FILE = "boards/common/gen/scene_640x480.hex",
@@ -33,19 +33,19 @@ module ulx3s_top #(
     output wire [3:0] gpdi_dp
 );
     // the two rasters (VESA DMT 640x480@60, CTA-861 VIC 4 1280x720@60), from boardgen
-    localparam H_ACTIVE = MODE720 ? `BOARD1280_H_ACTIVE : `BOARD640_H_ACTIVE;
-    localparam H_FP = MODE720 ? `BOARD1280_H_FP : `BOARD640_H_FP;
-    localparam H_SYNC = MODE720 ? `BOARD1280_H_SYNC : `BOARD640_H_SYNC;
-    localparam H_BP = MODE720 ? `BOARD1280_H_BP : `BOARD640_H_BP;
-    localparam V_ACTIVE = MODE720 ? `BOARD1280_V_ACTIVE : `BOARD640_V_ACTIVE;
-    localparam V_FP = MODE720 ? `BOARD1280_V_FP : `BOARD640_V_FP;
-    localparam V_SYNC = MODE720 ? `BOARD1280_V_SYNC : `BOARD640_V_SYNC;
-    localparam V_BP = MODE720 ? `BOARD1280_V_BP : `BOARD640_V_BP;
-    localparam H_POL = MODE720 ? `BOARD1280_H_POL : `BOARD640_H_POL;
-    localparam V_POL = MODE720 ? `BOARD1280_V_POL : `BOARD640_V_POL;
+    localparam H_ACTIVE = (MODE == 1) ? `BOARD1280_H_ACTIVE : (MODE == 2) ? `BOARD128_H_ACTIVE : `BOARD640_H_ACTIVE;
+    localparam H_FP = (MODE == 1) ? `BOARD1280_H_FP : (MODE == 2) ? `BOARD128_H_FP : `BOARD640_H_FP;
+    localparam H_SYNC = (MODE == 1) ? `BOARD1280_H_SYNC : (MODE == 2) ? `BOARD128_H_SYNC : `BOARD640_H_SYNC;
+    localparam H_BP = (MODE == 1) ? `BOARD1280_H_BP : (MODE == 2) ? `BOARD128_H_BP : `BOARD640_H_BP;
+    localparam V_ACTIVE = (MODE == 1) ? `BOARD1280_V_ACTIVE : (MODE == 2) ? `BOARD128_V_ACTIVE : `BOARD640_V_ACTIVE;
+    localparam V_FP = (MODE == 1) ? `BOARD1280_V_FP : (MODE == 2) ? `BOARD128_V_FP : `BOARD640_V_FP;
+    localparam V_SYNC = (MODE == 1) ? `BOARD1280_V_SYNC : (MODE == 2) ? `BOARD128_V_SYNC : `BOARD640_V_SYNC;
+    localparam V_BP = (MODE == 1) ? `BOARD1280_V_BP : (MODE == 2) ? `BOARD128_V_BP : `BOARD640_V_BP;
+    localparam H_POL = (MODE == 1) ? `BOARD1280_H_POL : (MODE == 2) ? `BOARD128_H_POL : `BOARD640_H_POL;
+    localparam V_POL = (MODE == 1) ? `BOARD1280_V_POL : (MODE == 2) ? `BOARD128_V_POL : `BOARD640_V_POL;
 
     wire clk_bit, clk_pix, locked;
-    ulx3s_pll #(.MODE720(MODE720)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_pix(clk_pix),
+    ulx3s_pll #(.MODE720(MODE == 1)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_pix(clk_pix),
                                           .locked(locked));
     wire rst_n, rst_bit_n;
     cdc_sync #(.STAGES(2)) u_rst (.clk(clk_pix), .rst_n(locked), .d(btn[0]), .q(rst_n));

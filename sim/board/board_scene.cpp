@@ -33,13 +33,21 @@ VideoMode video_mode(const std::string& name) {
         m.h_active = 1280, m.h_fp = 110, m.h_sync = 40, m.h_bp = 220;
         m.v_active = 720, m.v_fp = 5, m.v_sync = 5, m.v_bp = 20;
         m.h_pos = true, m.v_pos = true;
+    } else if (name == "128x96") {
+        // not a standard: a small raster for the quick board simulation in make test (the 640 x 480 PLL clock),
+        // with 800-pixel lines so that the renderer has the time per line it has at 640 x 480
+        m.standard = "test raster, no standard";
+        m.pixel_mhz = 25.0;
+        m.h_active = 128, m.h_fp = 8, m.h_sync = 16, m.h_bp = 648;
+        m.v_active = 96, m.v_fp = 2, m.v_sync = 2, m.v_bp = 4;
+        m.h_pos = false, m.v_pos = false;
     } else {
-        throw UsageError("unknown video mode '" + name + "' (640x480, 1280x720)");
+        throw UsageError("unknown video mode '" + name + "' (640x480, 1280x720, 128x96)");
     }
     return m;
 }
 
-std::vector<std::string> video_mode_names() { return {"640x480", "1280x720"}; }
+std::vector<std::string> video_mode_names() { return {"640x480", "1280x720", "128x96"}; }
 
 std::vector<unsigned> split_table(int k) {
     if (k < 1 || k > 64) throw UsageError("split table: k must be 1..64");
@@ -72,13 +80,13 @@ BoardScene make_board_scene(const std::string& mode, int k) {
         {200, 345, 100, 0.88, 0.66, 0.22, 0.10, 0.62, 0.70, 100},
         {440, 345, 100, 0.78, 0.78, 0.82, 0.10, 0.55, 0.80, 1000},
     };
-    const bool big = (mode == "1280x720");
+    const bool big = (mode == "1280x720"), small = (mode == "128x96");
     for (const Layout& b : base) {
         Sphere sp;
-        // 1280 x 720: 1.5 times larger, centred (960 x 720 of 1280 x 720)
-        sp.cx = big ? 160 + b.cx * 3 / 2 : b.cx;
-        sp.cy = big ? b.cy * 3 / 2 : b.cy;
-        sp.r = big ? b.r * 3 / 2 : b.r;
+        // 1280 x 720: 1.5 times larger, centred (960 x 720 of 1280 x 720); 128 x 96: a fifth
+        sp.cx = big ? 160 + b.cx * 3 / 2 : small ? b.cx / 5 : b.cx;
+        sp.cy = big ? b.cy * 3 / 2 : small ? b.cy / 5 : b.cy;
+        sp.r = big ? b.r * 3 / 2 : small ? b.r / 5 : b.r;
         sp.color[0] = b.c0, sp.color[1] = b.c1, sp.color[2] = b.c2;
         sp.ka = b.ka, sp.kd = b.kd, sp.ks = b.ks, sp.n = b.n;
         s.spheres.push_back(sp);

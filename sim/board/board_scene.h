@@ -13,7 +13,7 @@ namespace board {
 
 // A raster: active, front porch, sync, back porch per axis; polarity true = positive pulse.
 struct VideoMode {
-    std::string name;           // "640x480" or "1280x720"
+    std::string name;           // "640x480", "1280x720" or "128x96" (a small test raster)
     std::string standard;       // where the figures come from
     double pixel_mhz = 0;       // the standard's pixel clock
     int h_active = 0, h_fp = 0, h_sync = 0, h_bp = 0;
@@ -45,7 +45,7 @@ struct BoardScene {
 };
 
 // The scene for a video mode and a split table size (k: 1..64; 1 = no split). The spheres are laid out
-// for 640 x 480 and scaled by 1.5 for 1280 x 720. Throws UsageError for an unknown mode or k.
+// for 640 x 480, scaled by 1.5 for 1280 x 720 and by 1/5 for the 128 x 96 test raster. Throws UsageError for an unknown mode or k.
 BoardScene make_board_scene(const std::string& mode, int k);
 
 // The split table of k intervals: points equally spaced in the angle phi along the chord's half circle,

@@ -15,5 +15,15 @@ Shader host_shader(const Model& m, host::GammaRule rule) {
     };
 }
 
+Shader rtl_shader(const Model& m) {
+    return [&m](const ShadeIn& in) {
+        SpanRegs r;
+        r.c = in.strength;
+        r.n = 0;
+        r.len = in.l;
+        return m.span(r);
+    };
+}
+
 }  // namespace board
 }  // namespace spec

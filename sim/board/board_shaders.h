@@ -13,5 +13,9 @@ namespace board {
 // fixed-point one); used to measure how much of the error is the split and how much the setup.
 Shader host_shader(const Model& m, host::GammaRule rule);
 
+// The RTL's shader pass (boards/common/board_shader.v), bit for bit. SCAFFOLD until spec_shader lands:
+// the span goes to spec_stream flat (n = 0, C = strength), every pixel is the strength.
+Shader rtl_shader(const Model& m);
+
 }  // namespace board
 }  // namespace spec

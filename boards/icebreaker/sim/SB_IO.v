@@ -1,7 +1,7 @@
 // SB_IO - simulation model of the iCE40 I/O cell, output side only, for the PIN_TYPE values the board design
 // uses: 0101_01 (registered output: D_OUT_0 loaded at the rising OUTPUT_CLK edge when CLOCK_ENABLE = 1)
 // and 0110_01 (simple output: the pad follows D_OUT_0). Other values stop the simulation.
-`timescale 1ps / 1ps
+`timescale 1ns / 1ps
 `default_nettype none
 module SB_IO #(
     parameter [5:0] PIN_TYPE = 6'b0101_01

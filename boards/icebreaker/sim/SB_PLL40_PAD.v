@@ -1,9 +1,10 @@
 // SB_PLL40_PAD - simulation model of the iCE40 PLL (simple feedback only) for the board simulation.
-// It measures the input clock's period over 4 cycles, then (after 16 more) raises LOCK and drives
+// It measures the input clock's period over 4 cycles, then (after 17 more) raises LOCK and drives
 // PLLOUTGLOBAL / PLLOUTCORE at F_in x (DIVF + 1) / ((DIVR + 1) x 2^DIVQ), rising with an input edge, every
 // edge placed at an absolute time computed from the lock time (no drift from rounding).
+// Times in ns (`timescale 1ns / 1ps: Verilator 5.006 scales a delay in a 1ps-unit file by the top's unit).
 // Needs timing support (Verilator --timing, Icarus). Not for synthesis (Yosys has the real cell).
-`timescale 1ps / 1ps
+`timescale 1ns / 1ps
 `default_nettype none
 module SB_PLL40_PAD #(
     parameter FEEDBACK_PATH = "SIMPLE",
@@ -36,11 +37,11 @@ module SB_PLL40_PAD #(
     always @(posedge PACKAGEPIN) begin
         if (n_in == 0) t_first <= $realtime;
         if (n_in == 4) half <= ($realtime - t_first) / 4.0 * (DIVR + 1) * (1 << DIVQ) / (DIVF + 1) / 2.0;
-        if (n_in == 20) t_lock <= $realtime;
         n_in <= n_in + 1;
     end
     initial begin
         wait (n_in > 20);
+        t_lock = $realtime;
         LOCK = 1'b1;
         k = 0;
         forever begin

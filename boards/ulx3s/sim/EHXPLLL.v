@@ -1,10 +1,11 @@
 // EHXPLLL - simulation model of the ECP5 PLL for the board simulation: feedback from CLKOP only, outputs
-// CLKOP and CLKOS (CLKOS2/3 held low). It measures CLKI's period over 4 cycles, then (after 16 more) raises
+// CLKOP and CLKOS (CLKOS2/3 held low). It measures CLKI's period over 4 cycles, then (after 17 more) raises
 // LOCK and drives CLKOP at F_in x CLKFB_DIV / CLKI_DIV and CLKOS at CLKOP x CLKOP_DIV / CLKOS_DIV, both
 // rising together at lock; every edge is placed at an absolute time computed from the lock time, so the
 // outputs keep their exact ratio (the TMDS serializer relies on it, as on the chip). Phase parameters are
-// not modelled. Needs timing support (Verilator --timing, Icarus). Not for synthesis.
-`timescale 1ps / 1ps
+// not modelled. Times in ns (`timescale 1ns / 1ps: Verilator 5.006 scales a delay in a 1ps-unit file by the
+// top's unit). Needs timing support (Verilator --timing, Icarus). Not for synthesis.
+`timescale 1ns / 1ps
 `default_nettype none
 // The cell's full parameter list is declared so that the design's instance elaborates unchanged; most
 // parameters are not modelled (phase, wake-up, divider multiplexers).
@@ -66,11 +67,11 @@ module EHXPLLL #(
             half_op <= ($realtime - t_first) / 4.0 * CLKI_DIV / CLKFB_DIV / 2.0;
             half_os <= ($realtime - t_first) / 4.0 * CLKI_DIV / CLKFB_DIV * CLKOS_DIV / CLKOP_DIV / 2.0;
         end
-        if (n_in == 20) t_lock <= $realtime;
         n_in <= n_in + 1;
     end
     initial begin
         wait (n_in > 20);
+        t_lock = $realtime;
         LOCK = 1'b1;
         k_op = 0;
         forever begin
@@ -80,7 +81,7 @@ module EHXPLLL #(
         end
     end
     initial begin
-        wait (n_in > 20);
+        wait (LOCK);
         k_os = 0;
         forever begin
             if (CLKOS_ENABLE == "ENABLED") CLKOS = ~CLKOS;

@@ -1,7 +1,7 @@
 // ODDRX1F - simulation model of the ECP5 generic DDR output register (Lattice TN1265): D0 and D1 are taken at
 // the rising edge of SCLK; Q shows D0 while SCLK is high and D1 while it is low, so D0 leaves first.
 // RST (asynchronous, active high) clears both. Not for synthesis.
-`timescale 1ps / 1ps
+`timescale 1ns / 1ps
 `default_nettype none
 module ODDRX1F (
     input  wire SCLK,
