@@ -97,3 +97,18 @@ verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE lig
 target_sources(spec_tests PRIVATE tests/test_board_rtl.cpp tests/test_board_units.cpp tests/test_board_model.cpp)
 target_link_libraries(spec_tests PRIVATE vboard_modules boardmodel)
 target_compile_definitions(spec_tests PRIVATE BOARDSIM_PATH="$<TARGET_FILE:boardsim-quick>")
+
+# The committed tables are the generator's; both boards' top levels, 128 x 96 test raster, two whole frames
+# bit for bit against the model, video timing, TMDS decoding (the full-size runs: make board-sim)
+add_test(NAME board_tables_match_generator
+  COMMAND ${CMAKE_COMMAND} -DBOARDSIM=$<TARGET_FILE:boardsim-quick> -DGEN=${BOARD_GEN}
+          -DOUT=${CMAKE_BINARY_DIR}/board_gen_check -P ${CMAKE_SOURCE_DIR}/boards/gen_check.cmake)
+foreach(board icebreaker ulx3s)
+  add_test(NAME board_sim_${board}_quick
+    COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_BINARY_DIR}
+            $<TARGET_FILE:boardsim-quick> run --board ${board} --mode 128x96 --frames 2)
+endforeach()
+# Icarus accepts the board RTL as Verilog-2005 (each top with its primitives' simulation models)
+add_test(NAME iverilog_boards
+  COMMAND ${CMAKE_COMMAND} -DIVERILOG=${IVERILOG} -DSRC=${CMAKE_SOURCE_DIR} -DOUT=${CMAKE_BINARY_DIR}/iverilog_boards
+          -P ${CMAKE_SOURCE_DIR}/boards/iverilog_check.cmake)

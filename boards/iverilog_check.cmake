@@ -1,0 +1,26 @@
+# ctest iverilog_boards: Icarus Verilog 11 (-g2005 -Wall) elaborates each board top with the shared RTL, the
+# core and its primitives' simulation models, without a warning.
+file(MAKE_DIRECTORY ${OUT})
+function(read_list out list)
+  file(STRINGS ${SRC}/${list} lines)
+  set(files)
+  foreach(l ${lines})
+    string(STRIP "${l}" l)
+    if(l AND NOT l MATCHES "^#")
+      list(APPEND files ${SRC}/${l})
+    endif()
+  endforeach()
+  set(${out} ${files} PARENT_SCOPE)
+endfunction()
+read_list(common boards/common/board_common.f)
+file(GLOB core ${SRC}/rtl/spec_*.v)
+foreach(board icebreaker ulx3s)
+  read_list(own boards/${board}/${board}.f)
+  file(GLOB models ${SRC}/boards/${board}/sim/*.v)
+  execute_process(COMMAND ${IVERILOG} -g2005 -Wall -I${SRC}/rom -I${SRC}/boards/common/gen -s ${board}_top
+                          -o ${OUT}/${board}.vvp ${core} ${common} ${own} ${models}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR err MATCHES "warning|error")
+    message(FATAL_ERROR "iverilog ${board}_top: ${rc}\n${out}${err}")
+  endif()
+endforeach()
