@@ -209,3 +209,51 @@ fuzz: deps deps-fuzz
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
 	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)
+
+# ---- Reference designs on boards (issue 15, docs/boards.md) ----------------------------------------------------
+#   make board-sim BOARD=icebreaker|ulx3s [MODE=640x480|1280x720] [FRAMES=2]
+#                     the board's Verilated top for whole frames: PNGs, model and double-precision comparison,
+#                     video timing (build/board-sim/)
+#   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
+#   make flash BOARD=icebreaker|ulx3s [MODE=...]   program the board (iceprog / openFPGALoader)
+#   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
+#   make lint-boards    verilator --lint-only -Wall on the board RTL
+BOARD ?=
+MODE ?= 640x480
+FRAMES ?= 2
+BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
+CORE_RTL := $(filter-out rtl/parallax_step.v,$(RTL))
+
+.PHONY: board-sim bitstream flash board-tables lint-boards check-board
+
+check-board:
+	@case "$(BOARD)" in icebreaker|ulx3s) ;; *) echo "make: BOARD=icebreaker or BOARD=ulx3s"; exit 2;; esac
+
+board-sim: check-board build
+	$(call cmake_build,$(BUILD),--target boardsim)
+	@mkdir -p $(BUILD)/board-sim
+	$(BUILD)/boardsim run --board $(BOARD) --mode $(MODE) --frames $(FRAMES) --out-dir $(BUILD)/board-sim
+
+bitstream: check-board build deps-synth
+	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom
+
+# The programmer for each board (Debian: fpga-icestorm's iceprog, openfpgaloader); not run by any test
+flash: check-board
+	@if [ "$(BOARD)" = icebreaker ]; then f=$(BUILD)/board/icebreaker/icebreaker_640x480.bin; \
+	    cmd="iceprog $$f"; else f=$(BUILD)/board/ulx3s/ulx3s_$(MODE).bit; cmd="openFPGALoader -b ulx3s $$f"; fi; \
+	  if [ ! -f "$$f" ]; then echo "make flash: $$f not found: run 'make bitstream BOARD=$(BOARD)' first"; exit 2; fi; \
+	  echo "$$cmd"; $$cmd
+
+board-tables: build
+	$(BUILD)/boardsim-quick gen --out-dir boards/common/gen
+
+lint-boards: deps
+	@for top in $(basename $(notdir $(BOARD_RTL))); do \
+	    verilator --lint-only -Wall -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) --top-module $$top \
+	        || exit 1; echo "  $$top: clean"; \
+	done
+	@for b in icebreaker ulx3s; do \
+	    verilator --lint-only -Wall --timing -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) \
+	        $$(grep -v '^#' boards/$$b/$$b.f) boards/$$b/sim/*.v --top-module $${b}_top || exit 1; \
+	    echo "  $${b}_top (with the primitives' simulation models): clean"; \
+	done

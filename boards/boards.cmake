@@ -73,10 +73,10 @@ add_library(vboard_modules STATIC tests/modules_stub.cpp)
 set(BOARD_MOD_ARGS -Wall -I${BOARD_GEN} -O3 --x-assign fast --x-initial fast)
 set(BC ${CMAKE_SOURCE_DIR}/boards/common)
 verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
-  PREFIX Vsphere_spans_small VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=3 -GSQRT_STEPS=2 -GK=16
+  PREFIX Vsphere_spans_small VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=1 -GSQRT_STEPS=1 -GK=16
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_640x480.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_16.hex\"")
 verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
-  PREFIX Vsphere_spans_fast VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=9 -GSQRT_STEPS=7 -GK=32
+  PREFIX Vsphere_spans_fast VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=9 -GSQRT_STEPS=2 -GK=32
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_1280x720.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_32.hex\"")
 verilate(vboard_modules SOURCES ${BC}/tmds_encoder.v TOP_MODULE tmds_encoder PREFIX Vtmds_encoder
   VERILATOR_ARGS ${BOARD_MOD_ARGS})

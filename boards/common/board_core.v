@@ -81,8 +81,22 @@ module board_core #(
     wire line_ev = pix_ce && (h == {X_W{1'b0}});                       // a line begins
     wire swap_ev = pix_ce && (h == H_TOTAL[X_W-1:0] - 1'b1);           // a line ends: the banks swap
     wire frame_ev = line_ev && (v == V_ACTIVE[Y_W-1:0]);
-    wire render_ev = line_ev && ((v < V_ACTIVE[Y_W-1:0] - 1'b1) || (v == V_TOTAL[Y_W-1:0] - 1'b1));
-    wire [Y_W-1:0] render_y = (v == V_TOTAL[Y_W-1:0] - 1'b1) ? {Y_W{1'b0}} : v + {{(Y_W - 1) {1'b0}}, 1'b1};
+    // which line to render during line v: prepared during the line before (from the stable v, for the line
+    // v + 1 that follows), taken over as the line ends; after reset, line V_ACTIVE renders nothing
+    localparam [Y_W-1:0] V_ACT_M2 = V_ACTIVE - 2;
+    localparam [Y_W-1:0] V_TOT_M2 = V_TOTAL - 2;
+    localparam [Y_W-1:0] V_TOT_M1 = V_TOTAL - 1;
+    reg nxt_this, render_this;
+    reg [Y_W-1:0] nxt_y, render_y;
+    always @(posedge clk) begin
+        nxt_this <= (v < V_ACT_M2) || (v >= V_TOT_M2);
+        nxt_y <= (v == V_TOT_M2) ? {Y_W{1'b0}} : (v == V_TOT_M1) ? {{(Y_W - 1) {1'b0}}, 1'b1} :
+                 v + {{(Y_W - 2) {1'b0}}, 2'd2};
+        if (!rst_n) render_this <= 1'b0;
+        else if (swap_ev) render_this <= nxt_this;
+        if (swap_ev) render_y <= nxt_y;
+    end
+    wire render_ev = line_ev && render_this;
 
     reg render_bank;
     always @(posedge clk) begin

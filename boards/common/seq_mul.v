@@ -55,6 +55,9 @@ module seq_mul #(
         end
     end
 
+    // STEPS_PER_CLK = B_W: the whole product at once, as a multiplier the synthesis maps (a DSP block)
+    wire [A_W+B_W-1:0] p_full = a * b;
+
     always @(posedge clk) begin
         if (!rst_n) begin
             busy <= 1'b0;
@@ -65,7 +68,7 @@ module seq_mul #(
                 if (start) begin
                     a_q <= a;
                     b_q <= b_n;
-                    p <= p_n;
+                    p <= (CYCLES == 1) ? p_full : p_n;
                     left <= CYCLES[C_W-1:0] - {{(C_W - 1) {1'b0}}, 1'b1};
                     if (CYCLES == 1) done <= 1'b1;
                     else busy <= 1'b1;

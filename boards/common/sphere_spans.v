@@ -88,12 +88,18 @@ module sphere_spans #(
     reg a2_v;                          // stage A2's input register holds a token
     reg [A2_W-1:0] a2_tok;
     wire a2_take;                      // A2 is done with its token this cycle
-    wire a2_free = !a2_v || a2_take;
+    wire a2_free = !a2_v;              // (not || a2_take: no combinational path back through the stages)
     reg s_v;                           // stage B has returned the chord's s to stage A1
     reg [R_W-1:0] s_q;
+    reg s_zero;                        // s = 0: the chord has no pixel
 
-    localparam A_IDLE = 3'd0, A_OBJ = 3'd1, A_DY2 = 3'd2, A_S = 3'd3, A_P = 3'd4, A_P2 = 3'd5, A_HAND = 3'd6;
-    reg [2:0] st;
+    // at most one carry chain between registers in each state (the iCE40 runs this at 50 MHz)
+    localparam A_IDLE = 4'd0, A_OBJ = 4'd1, A_DY = 4'd2, A_ABS = 4'd3, A_CMP = 4'd4, A_DY2 = 4'd5, A_S = 4'd6,
+               A_X0 = 4'd7, A_P = 4'd8, A_P2 = 4'd9, A_P3 = 4'd10, A_HAND = 4'd11, A_MISS = 4'd12;
+    reg miss;                          // the line misses the sphere: |DY| >= R2
+    reg [3:0] st;
+    reg [47:0] cur;                    // the sphere's scene word
+    reg [R_W+3:0] ady;                 // |DY|
     reg [Y_W-1:0] y_q;
     reg [OBJ_W:0] obj;
     reg signed [12:0] dy;              // 2y + 1 - 2cy
@@ -106,22 +112,26 @@ module sphere_spans #(
     reg signed [R_W+1:0] dx;
     reg m_chord_pending;               // A_HAND hands the chord's token (else a point's)
 
-    wire [47:0] cur = scene[obj[OBJ_W-1:0]];
     wire [10:0] cur_cx = cur[47:37];
     wire [9:0] cur_cy = cur[36:27];
     wire [17:0] cur_r2sq = cur[26:9];
     wire [8:0] cur_r2 = cur[8:0];
     wire signed [12:0] dy_d = $signed({2'b00, y_q, 1'b1}) - $signed({2'b00, cur_cy, 1'b0});
-    wire [12:0] ady_d = dy_d[12] ? -dy_d : dy_d;
+    wire [12:0] ady_d = dy[12] ? -dy : dy;
     wire [R_W-1:0] m_d = s_q[0] ? s_q : s_q - {{(R_W - 1) {1'b0}}, 1'b1};
     wire [R_W+F-1:0] pv = mul_p[R_W+F-1:0] + {{(R_W) {1'b0}}, 1'b1, {(F - 1) {1'b0}}};
     wire [R_W-1:0] p_d = pv[R_W+F-1:F];
-    wire signed [R_W+1:0] dx_d = $signed({1'b0, p_d, 1'b0}) - $signed({2'b00, m});
+    wire signed [R_W+1:0] dx_d = $signed({1'b0, p, 1'b0}) - $signed({2'b00, m});
     localparam integer LAST_OBJ = N_OBJ - 1;
-    wire last_obj = (obj == LAST_OBJ[OBJ_W:0]);
-    wire last_j = (j == K[J_W-1:0]);
+    localparam integer LAST_J = K - 1;
+    // "this is the last sphere / split point", kept as flags beside the counters (shallow next-state logic)
+    reg last_obj, last_j;
+    wire [OBJ_W:0] obj_inc = obj + {{OBJ_W{1'b0}}, 1'b1};
+    wire [J_W-1:0] j_inc = j + {{(J_W - 1) {1'b0}}, 1'b1};
+    wire obj_inc_last = (obj == LAST_OBJ[OBJ_W:0] - 1'b1);
+    wire j_inc_last = (j == LAST_J[J_W-1:0]);
     wire unused_a;
-    assign unused_a = &{1'b0, mul_busy, mul_p[2*R_W-1:R_W+F], ady_d[12:R_W], pv[F-1:0]};
+    assign unused_a = &{1'b0, mul_busy, mul_p[2*R_W-1:R_W+F], pv[F-1:0]};
 
     always @(posedge clk) begin
         mul_start <= 1'b0;
@@ -134,16 +144,36 @@ module sphere_spans #(
                 A_IDLE: if (start && !busy) begin
                     y_q <= y;
                     obj <= {(OBJ_W + 1) {1'b0}};
+                    last_obj <= (N_OBJ == 1);
                     st <= A_OBJ;
                 end
                 A_OBJ: begin
+                    cur <= scene[obj[OBJ_W-1:0]];
+                    st <= A_DY;
+                end
+                A_DY: begin
                     dy <= dy_d;
-                    if (ady_d >= {4'd0, cur_r2}) begin
+                    st <= A_ABS;
+                end
+                A_ABS: begin
+                    ady <= ady_d;
+                    st <= A_CMP;
+                end
+                A_CMP: begin
+                    miss <= (ady >= {4'd0, cur_r2});
+                    st <= A_MISS;
+                end
+                A_MISS: begin
+                    if (miss) begin
                         if (last_obj) st <= A_IDLE;
-                        else obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                        else begin
+                            obj <= obj_inc;
+                            last_obj <= obj_inc_last;
+                            st <= A_OBJ;
+                        end
                     end else begin
-                        mul_a <= ady_d[R_W-1:0];
-                        mul_b <= ady_d[R_W-1:0];
+                        mul_a <= ady[R_W-1:0];
+                        mul_b <= ady[R_W-1:0];
                         mul_start <= 1'b1;
                         st <= A_DY2;
                     end
@@ -153,19 +183,25 @@ module sphere_spans #(
                     st <= A_HAND;          // the chord's token goes to the square root for s
                 end
                 A_S: if (s_v) begin
-                    if (s_q == {R_W{1'b0}}) begin
+                    if (s_zero) begin
                         if (last_obj) st <= A_IDLE;
                         else begin
-                            obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                            obj <= obj_inc;
+                            last_obj <= obj_inc_last;
                             st <= A_OBJ;
                         end
                     end else begin
                         m <= m_d;
-                        x0 <= cur_cx - {{(X_W - R_W) {1'b0}}, (m_d >> 1) + {{(R_W - 1) {1'b0}}, 1'b1}};
-                        j <= {J_W{1'b0}};
-                        first <= 1'b1;
-                        st <= A_P;
+                        st <= A_X0;
                     end
+                end
+                A_X0: begin
+                    // x0 = cx - (m + 1) / 2 = cx + ~(m >> 1) (m odd)
+                    x0 <= cur_cx + ~{{(X_W - R_W + 1) {1'b0}}, m[R_W-1:1]};
+                    j <= {J_W{1'b0}};
+                    last_j <= (K == 0);
+                    first <= 1'b1;
+                    st <= A_P;
                 end
                 A_P: begin
                     mul_a <= m;
@@ -175,17 +211,22 @@ module sphere_spans #(
                 end
                 A_P2: if (mul_done) begin
                     p <= p_d;
+                    st <= A_P3;
+                end
+                A_P3: begin
                     dx <= dx_d;
-                    if (!first && p_d == p_prev) begin
+                    if (!first && p == p_prev) begin
                         // the same pixel as the previous point: no sub-span
                         if (last_j) begin
                             if (last_obj) st <= A_IDLE;
                             else begin
-                                obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                                obj <= obj_inc;
+                                last_obj <= obj_inc_last;
                                 st <= A_OBJ;
                             end
                         end else begin
-                            j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
+                            j <= j_inc;
+                            last_j <= j_inc_last;
                             st <= A_P;
                         end
                     end else st <= A_HAND;
@@ -203,11 +244,13 @@ module sphere_spans #(
                         if (last_j) begin
                             if (last_obj) st <= A_IDLE;
                             else begin
-                                obj <= obj + {{OBJ_W{1'b0}}, 1'b1};
+                                obj <= obj_inc;
+                                last_obj <= obj_inc_last;
                                 st <= A_OBJ;
                             end
                         end else begin
-                            j <= j + {{(J_W - 1) {1'b0}}, 1'b1};
+                            j <= j_inc;
+                            last_j <= j_inc_last;
                             st <= A_P;
                         end
                     end
@@ -219,20 +262,21 @@ module sphere_spans #(
     // A_HAND after A_DY2 hands the chord, after A_P2 a point
     always @(posedge clk) begin
         if (st == A_DY2) m_chord_pending <= 1'b1;
-        else if (st == A_P2) m_chord_pending <= 1'b0;
+        else if (st == A_P3) m_chord_pending <= 1'b0;
     end
 
     // ---- stage A2: DX^2 for a point's radicand --------------------------------------------------------------
     reg b_v;                           // stage B's input register holds a token
     reg [TOK_W-1:0] b_tok;             // {is_point, first, obj, x0, dy, p, dx, radicand}
     wire b_take;                       // stage B takes its token into the square root
-    wire b_free = !b_v || b_take;
+    wire b_free = !b_v;
     reg mul2_start;
     wire mul2_busy, mul2_done;
     wire [2*R_W-1:0] mul2_p;
     wire a2_point = a2_tok[A2_W-1];
     wire signed [R_W+1:0] a2_dx = a2_tok[2*R_W +: R_W + 2];
-    wire [R_W+1:0] a2_adx = a2_dx[R_W+1] ? -a2_dx : a2_dx;
+    wire [R_W+1:0] a2_adx_d = a2_dx[R_W+1] ? -a2_dx : a2_dx;
+    reg [R_W+1:0] a2_adx;              // |DX|, registered before the multiplier
     wire [2*R_W-1:0] a2_w2 = a2_tok[2*R_W-1:0];
     seq_mul #(.A_W(R_W), .B_W(R_W), .STEPS_PER_CLK(MUL_STEPS)) u_mul2 (
         .clk(clk), .rst_n(rst_n), .start(mul2_start), .a(a2_adx[R_W-1:0]), .b(a2_adx[R_W-1:0]), .busy(mul2_busy),
@@ -240,18 +284,21 @@ module sphere_spans #(
     );
     reg a2_sq;                         // the token's DX^2 is ready (or not needed: a chord)
     assign a2_take = a2_v && a2_sq && b_free;
+    reg a2_new;                        // a point arrived last cycle: its |DX| is registered now
     always @(posedge clk) begin
         mul2_start <= 1'b0;
+        a2_adx <= a2_adx_d;
         if (!rst_n) begin
             a2_sq <= 1'b0;
+            a2_new <= 1'b0;
             b_v <= 1'b0;
         end else begin
             if (b_take) b_v <= 1'b0;
-            // a token arrives: a chord needs nothing, a point starts its DX^2
-            if (a2_free && st == A_HAND) begin
-                a2_sq <= m_chord_pending;
-                mul2_start <= !m_chord_pending;
-            end else if (mul2_done) a2_sq <= 1'b1;
+            // a token arrives: a chord needs nothing, a point starts its DX^2 once |DX| is registered
+            a2_new <= a2_free && st == A_HAND && !m_chord_pending;
+            mul2_start <= a2_new;
+            if (a2_free && st == A_HAND) a2_sq <= m_chord_pending;
+            else if (mul2_done) a2_sq <= 1'b1;
             if (a2_take) begin
                 b_v <= 1'b1;
                 b_tok <= {a2_tok[A2_W-1:2*R_W], a2_point ? a2_w2 - mul2_p : a2_w2, {(2 * ZF) {1'b0}}};
@@ -278,7 +325,7 @@ module sphere_spans #(
     wire c_take;
     wire tag_point = sq_tag[TOK_W-RAD_W-1];
     // a finished root leaves when its destination is free: stage A (s) always, stage C (z) when c_v is free
-    wire sq_leave = sq_run && sq_done_q && (!tag_point || !c_v || c_take);
+    wire sq_leave = sq_run && sq_done_q && (!tag_point || !c_v);
     reg sq_done_q;                     // the root is ready (held until it leaves)
     always @(posedge clk) begin
         if (!rst_n) begin
@@ -303,6 +350,7 @@ module sphere_spans #(
                 end else begin
                     s_v <= 1'b1;
                     s_q <= sq_root[Z_W-1:ZF];
+                    s_zero <= (sq_root[Z_W-1:ZF] == {R_W{1'b0}});
                 end
             end
         end
@@ -324,7 +372,7 @@ module sphere_spans #(
     wire [47:0] n_cur = {{(16 - Z_W) {1'b0}}, c_z, dy16 <<< ZF, dx16 <<< ZF};
     reg [47:0] n_prev;
     reg [R_W-1:0] cp_prev;
-    assign c_take = c_v && (!m_valid || m_ready);
+    assign c_take = c_v && !m_valid;   // the output register is empty (m_ready does not reach further back)
     always @(posedge clk) begin
         if (!rst_n) begin
             m_valid <= 1'b0;

@@ -43,7 +43,6 @@ module video_timing #(
     localparam [X_W-1:0] HS_END = H_ACTIVE + H_FP + H_SYNC;
     localparam [Y_W-1:0] VS_BEGIN = V_ACTIVE + V_FP;
     localparam [Y_W-1:0] VS_END = V_ACTIVE + V_FP + V_SYNC;
-    localparam [X_W-1:0] H_ACT = H_ACTIVE;
     localparam [Y_W-1:0] V_ACT = V_ACTIVE;
 
     // misconfiguration stops elaboration (every tool) and simulation (with a message)
@@ -58,29 +57,45 @@ module video_timing #(
         end
     endgenerate
 
+    // Every decision is an equality with a constant on the registered counters (no magnitude compares
+    // chained after the increments): flags for "active column", "active line", hsync and vsync change at the
+    // count before their boundary, in step with the counters.
+    localparam [X_W-1:0] H_ACT_LAST = H_ACTIVE - 1;
+    localparam [Y_W-1:0] V_ACT_LAST = V_ACTIVE - 1;
+    localparam [X_W-1:0] HS_ON = HS_BEGIN - 1'b1;
+    localparam [X_W-1:0] HS_OFF = HS_END - 1'b1;
+    localparam [Y_W-1:0] VS_ON = VS_BEGIN - 1'b1;
+    localparam [Y_W-1:0] VS_OFF = VS_END - 1'b1;
+    reg h_act, v_act, hs_q, vs_q;      // for the current (h, v): h < H_ACTIVE, v < V_ACTIVE, syncs active
     wire h_wrap = (h == H_LAST);
-    wire [X_W-1:0] h_d = h_wrap ? {X_W{1'b0}} : h + {{(X_W - 1) {1'b0}}, 1'b1};
-    wire [Y_W-1:0] v_d = !h_wrap ? v : (v == V_LAST) ? {Y_W{1'b0}} : v + {{(Y_W - 1) {1'b0}}, 1'b1};
-    wire hs_d = (h_d >= HS_BEGIN) && (h_d < HS_END);
+    wire h_act_d = h_wrap ? 1'b1 : (h == H_ACT_LAST) ? 1'b0 : h_act;
+    wire v_act_d = !h_wrap ? v_act : (v == V_LAST) ? 1'b1 : (v == V_ACT_LAST) ? 1'b0 : v_act;
+    wire hs_d = (h == HS_ON) ? 1'b1 : (h == HS_OFF) ? 1'b0 : hs_q;
     // vsync switches with the hsync leading edge (CTA-861 and VESA DMT draw a line from one hsync to the
-    // next): the line a position belongs to for vsync is v + 1 from the hsync on
-    wire [Y_W-1:0] v_sync_line = (h_d < HS_BEGIN) ? v_d : (v_d == V_LAST) ? {Y_W{1'b0}} : v_d + {{(Y_W - 1) {1'b0}}, 1'b1};
-    wire vs_d = (v_sync_line >= VS_BEGIN) && (v_sync_line < VS_END);
-    wire de_d = (h_d < H_ACT) && (v_d < V_ACT);
+    // next): on at the hsync of line V_ACTIVE + V_FP - 1, off at the hsync of line V_ACTIVE + V_FP + V_SYNC - 1
+    wire vs_d = (h != HS_ON) ? vs_q : (v == VS_ON) ? 1'b1 : (v == VS_OFF) ? 1'b0 : vs_q;
 
     always @(posedge clk) begin
         if (!rst_n) begin
             h <= {X_W{1'b0}};
             v <= V_ACT;
+            h_act <= 1'b1;
+            v_act <= 1'b0;
+            hs_q <= 1'b0;
+            vs_q <= 1'b0;
             hsync <= (H_POL == 0);
             vsync <= (V_POL == 0);
             de <= 1'b0;
         end else if (ce) begin
-            h <= h_d;
-            v <= v_d;
+            h <= h_wrap ? {X_W{1'b0}} : h + {{(X_W - 1) {1'b0}}, 1'b1};
+            if (h_wrap) v <= (v == V_LAST) ? {Y_W{1'b0}} : v + {{(Y_W - 1) {1'b0}}, 1'b1};
+            h_act <= h_act_d;
+            v_act <= v_act_d;
+            hs_q <= hs_d;
+            vs_q <= vs_d;
             hsync <= hs_d ^ (H_POL == 0);
             vsync <= vs_d ^ (V_POL == 0);
-            de <= de_d;
+            de <= h_act_d & v_act_d;
         end
     end
 endmodule

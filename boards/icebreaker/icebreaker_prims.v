@@ -4,6 +4,9 @@
 // the models in boards/icebreaker/sim/.
 `timescale 1ns / 1ps
 `default_nettype none
+// One file holds the board's primitive wrappers (the issue's rule: every primitive in one board-specific file),
+// so the file name cannot match each module's: the one waiver of that rule.
+/* verilator lint_off DECLFILENAME */
 
 // icebreaker_pll - 12 MHz from the board's oscillator (pin 35, the PLL's input pad) to the design clock.
 // SB_PLL40_PAD, simple feedback: F_out = 12 MHz x (DIVF + 1) / ((DIVR + 1) x 2^DIVQ) with the VCO
@@ -15,6 +18,7 @@ module icebreaker_pll (
     output wire clk,
     output wire locked
 );
+    wire pll_core_unused;
     SB_PLL40_PAD #(
         .FEEDBACK_PATH("SIMPLE"),
         .DIVR(4'd0),
@@ -23,7 +27,7 @@ module icebreaker_pll (
         .FILTER_RANGE(3'd1)
     ) u_pll (
         .PACKAGEPIN(pin_12mhz),
-        .PLLOUTCORE(),
+        .PLLOUTCORE(pll_core_unused),
         .PLLOUTGLOBAL(clk),
         .RESETB(1'b1),
         .BYPASS(1'b0),
@@ -33,8 +37,9 @@ endmodule
 
 // icebreaker_dvi_pins - the 16 pins of the 12-bit DVI Pmod, each driven from the output flip-flop of its
 // I/O cell (SB_IO, PIN_TYPE 0101_01: registered output, no output enable), so that all pins switch together
-// at the pad. data = {r[3:0], g[3:0], b[3:0], hsync, vsync, de} is loaded in cycles with load = 1;
-// pin_clk is loaded every cycle with clk_next (the pixel clock, built from the doubled clock).
+// at the pad. The flip-flops load every cycle (the two I/O cells of a tile share one clock enable, and the
+// Pmod's pins share tiles), from fabric registers: data = {r[3:0], g[3:0], b[3:0], hsync, vsync, de} is taken
+// into them in cycles with load = 1, clk_next every cycle; the pins follow one clock later.
 module icebreaker_dvi_pins (
     input  wire        clk,
     input  wire        load,
@@ -43,16 +48,23 @@ module icebreaker_dvi_pins (
     output wire [14:0] pins,
     output wire        pin_clk
 );
+    reg [14:0] data_q;
+    reg clk_q;
+    always @(posedge clk) begin
+        if (load) data_q <= data;
+        clk_q <= clk_next;
+    end
     genvar i;
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_pin
             SB_IO #(.PIN_TYPE(6'b0101_01)) u_io (
-                .PACKAGE_PIN(pins[i]), .CLOCK_ENABLE(load), .OUTPUT_CLK(clk), .D_OUT_0(data[i])
+                .PACKAGE_PIN(pins[i]), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(data_q[i])
             );
         end
     endgenerate
     SB_IO #(.PIN_TYPE(6'b0101_01)) u_clk (
-        .PACKAGE_PIN(pin_clk), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(clk_next)
+        .PACKAGE_PIN(pin_clk), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(clk_q)
     );
 endmodule
+/* verilator lint_on DECLFILENAME */
 `default_nettype wire

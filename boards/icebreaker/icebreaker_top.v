@@ -68,7 +68,7 @@ module icebreaker_top #(
         .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-        .MUL_STEPS(3), .SQRT_STEPS(2), .SHADERS(1), .SHADER_SMALL(1),
+        .MUL_STEPS(1), .SQRT_STEPS(1), .SHADERS(1), .SHADER_SMALL(1),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
@@ -82,5 +82,7 @@ module icebreaker_top #(
     assign {dvi_r, dvi_g, dvi_b, dvi_hs, dvi_vs, dvi_de} = pins;
     assign LEDR_N = ~late;
     assign LEDG_N = ~frame[5];
+    wire unused_frame;
+    assign unused_frame = &{1'b0, frame[7:6], frame[4:0]};
 endmodule
 `default_nettype wire

