@@ -15,8 +15,8 @@
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
 #   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
-#   make methods  the three companion papers measured: specsim highlight, normalize, parallax (docs/methods.md),
-#               pictures in build/methods
+#   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
+#               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
 #   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
 #   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
@@ -28,8 +28,11 @@
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
-RTL := $(wildcard rtl/*.v)
-RTL_TOPS := $(basename $(notdir $(RTL)))
+# The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/); other modules in rtl/ (companions)
+# are linted on their own
+RTL_CORE := $(addprefix rtl/,$(shell cat rtl/spec_core.f))
+RTL_CORE_TOPS := $(basename $(notdir $(RTL_CORE)))
+RTL_OTHER := $(filter-out $(RTL_CORE),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
         bench-render synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
@@ -64,13 +67,20 @@ test: ctest lint
 
 lint: deps
 	@echo "verilator --lint-only -Wall:"
-	@for top in $(RTL_TOPS); do \
-	    verilator --lint-only -Wall -Irom -Irtl $(RTL) --top-module $$top || exit 1; \
+	@for top in $(RTL_CORE_TOPS); do \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top || exit 1; \
 	    echo "  $$top: clean"; \
 	done
 	@for top in spec_unit spec_stream; do \
-	    verilator --lint-only -Wall -Irom -Irtl $(RTL) --top-module $$top -GDECODER_ROM=1 -GTSEL_W=3 || exit 1; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GDECODER_ROM=1 -GTSEL_W=3 || exit 1; \
 	    echo "  $$top with ROM 9's table field (DECODER_ROM = 1, TSEL_W = 3): clean"; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 \
+	        -GSCALE_FRAC=13 || exit 1; \
+	    echo "  $$top in the up5k configuration (INTERP = 1): clean"; \
+	done
+	@for f in $(RTL_OTHER); do \
+	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
+	    echo "  $$f (not in the core's file list): clean"; \
 	done
 	@syn/ice40_smoke.sh $(BUILD)/syn
 
@@ -85,7 +95,7 @@ sim: build
 	@$(BUILD)/specsim plots --out-dir $(BUILD)/sim/plots
 
 roms: build
-	$(BUILD)/specrom --out rom
+	$(BUILD)/specrom --out rom --rom-path rom/
 
 fig8: build
 	$(BUILD)/specsim fig8
@@ -93,13 +103,15 @@ fig8: build
 clean:
 	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz
 
-# Regenerate the documents made from simulation (checked by the ctest docs_timing_matches_simulation)
+# Regenerate the documents made from simulation and every number marked in README.md and docs/*.md
+# (scripts/docgen.py; the ctests docs_current and docs_*timing_matches_simulation check them)
 docs: build
 	$(BUILD)/specsim demo --diagram docs/fig11-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/interface.md docs/fig11-timing.txt
 	python3 scripts/embed_diagram.py README.md docs/fig11-timing.txt waves
 	$(BUILD)/specsim stream-diagram --out docs/stream-timing.txt > /dev/null
 	python3 scripts/embed_diagram.py docs/stream.md docs/stream-timing.txt
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 accuracy: build
 	$(BUILD)/specsim accuracy
@@ -122,11 +134,21 @@ images: build
 	cp $(BUILD)/img_methods/panel_teapot-lo.png docs/img/methods_normalize.png
 	cp $(BUILD)/img_methods/parallax_bricks.png docs/img/methods_parallax.png
 
-# The companion papers (docs/methods.md): each claim measured, tables on stdout, pictures in build/methods
+# The companion papers (docs/methods.md): each claim measured; the document's tables (and README's) are
+# regenerated from the commands' --tables output (ctest methods_doc_tables compares them), plots and pictures
+# in build/methods, the document's pictures copied to docs/img
+METHODS_IMG := cull_default.png:methods_cull.png fig3.png:methods_fig3.png panel_teapot-lo.png:methods_normalize.png \
+               cost.png:methods_cost.png parallax_bricks.png:methods_parallax.png \
+               fetches_all_30.png:methods_fetches_30.png fetches_all_15.png:methods_fetches_15.png \
+               fetches_bricks_15.png:methods_fetches_bricks_15.png
 methods: build
-	$(BUILD)/specsim highlight --out-dir $(BUILD)/methods
-	$(BUILD)/specsim normalize --out-dir $(BUILD)/methods
-	$(BUILD)/specsim parallax --out-dir $(BUILD)/methods
+	@mkdir -p $(BUILD)/methods docs/img
+	$(BUILD)/specsim highlight --out-dir $(BUILD)/methods --tables $(BUILD)/methods/highlight.md
+	$(BUILD)/specsim normalize --out-dir $(BUILD)/methods --tables $(BUILD)/methods/normalize.md
+	$(BUILD)/specsim parallax --out-dir $(BUILD)/methods --tables $(BUILD)/methods/parallax.md
+	python3 scripts/methods_doc.py embed docs/methods.md README.md -- \
+	    $(BUILD)/methods/highlight.md $(BUILD)/methods/normalize.md $(BUILD)/methods/parallax.md
+	@for p in $(METHODS_IMG); do cp $(BUILD)/methods/$${p%%:*} docs/img/$${p##*:}; done
 
 # Tuned mode and other table sets (docs/tuned.md)
 compare: build
@@ -144,6 +166,8 @@ bench-render: build
 bench-stream: build
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/specsim bench-stream --runs 5 --json $(BUILD)/bench/stream.json
+	@mkdir -p docs/data && cp $(BUILD)/bench/stream.json docs/data/bench_stream.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench: bench-render bench-stream
 
@@ -153,7 +177,8 @@ deps-synth:
 	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
 
 synth: build deps-synth
-	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit --configs up5k,default \
+	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit,parallax_iter \
+	    --configs up5k,default \
 	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
@@ -175,19 +200,20 @@ deps-formal:
 
 formal: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal
+	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal --data docs/data/formal.json
 
 # The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
 formal-mutants: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants
+	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
 	$(call cmake_build,$(BUILD)-cov,--target spec_tests specsim)
 	rm -rf $(BUILD)-cov/coverage $(BUILD)-cov/annotated
 	cd $(BUILD)-cov && SPEC_COVERAGE_DIR=coverage ./spec_tests --gtest_brief=1
-	python3 scripts/coverage.py --goal 95 --uncovered --annotate $(BUILD)-cov/annotated $(BUILD)-cov/coverage
+	python3 scripts/coverage.py --goal 100 --uncovered --annotate $(BUILD)-cov/annotated --json docs/data/coverage.json \
+	    $(BUILD)-cov/coverage
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long

@@ -14,7 +14,11 @@ Exit code 0 only when every proof and every cover passed; a failing proof leaves
 (VCD) in the work directory and says where.
 
 usage: formal.py [--specrom PATH] [--work DIR] [--jobs NAME,...] [--yosys yosys] [--smtbmc yosys-smtbmc]
+                 [--mutants] [--data FILE.json]
+--data: also write the results (every step, its time, the covers reached; or every mutant) as JSON, which
+`make formal` / `make formal-mutants` put into docs/data/ for docs/verification.md (scripts/docgen.py).
 """
+import json
 import argparse
 import os
 import re
@@ -31,14 +35,16 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
           "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
 
-LEAVES = ["spec_reg", "spec_counter", "spec_accum", "spec_rom", "spec_rom9", "spec_decoder", "spec_mul11",
-          "spec_rom12", "spec_interp", "spec_mul13", "spec_delay", "spec_datapath", "spec_saccum", "spec_ctrl"]
+def core_files(rtl_dir):
+    """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
+    with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
+        return [os.path.join(rtl_dir, line.strip()) for line in f if line.strip()]
 
 JOBS = {
     "spec_unit": dict(
         core="spec_unit", wrapper="fv_spec_unit",
         expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
-                "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs"],
+                "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs", "start_q", "len_q"],
         depth=2, bmc=40, cover=48),
     "spec_stream": dict(
         core="spec_stream", wrapper="fv_spec_stream",
@@ -58,10 +64,15 @@ JOBS = {
 # minutes, the failing ones 1-2 minutes each).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 24}
 MUTANTS = [
-    ("spec_unit", "spec_unit.v", ".load_n(len_load_n | busy_o)", ".load_n(len_load_n)",
+    ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
     ("spec_unit", "spec_unit.v", ".we(c_we & idle)", ".we(c_we)", "register 1 written while busy"),
-    ("spec_unit", "spec_unit.v", ".start(start & idle)", ".start(start)", "Start not ignored while busy"),
+    ("spec_unit", "spec_unit.v", "wire start_go = start & ~start_q & idle;", "wire start_go = start & ~start_q;",
+     "Start not ignored while busy"),
+    ("spec_unit", "spec_unit.v", "wire start_go = start & ~start_q & idle;", "wire start_go = start & idle;",
+     "Start as a level (the 211-pixel trap)"),
+    ("spec_unit", "spec_unit.v", ".load_n(~(len_we | start_go))", ".load_n(~len_we)",
+     "a Start without a load runs 2^L_W pixels (counter 5 not reloaded)"),
     ("spec_unit", "spec_unit.v", "assign busy_o = sig28 | fresh8 | dp_busy;", "assign busy_o = sig28 | fresh8;",
      "busy_o falls before the last pixel is out"),
     ("spec_unit", "spec_counter.v", "(q == {W{1'b0}})", "(q == {{(W - 1) {1'b0}}, 1'b1})",
@@ -95,7 +106,7 @@ def tail(path, n=15):
 
 
 def build_model(job, name, work, yosys, rtl_dir):
-    rtl = [os.path.join(rtl_dir, m + ".v") for m in LEAVES + [job["core"]]]
+    rtl = core_files(rtl_dir)
     script = [
         "read_verilog -defer -I rom " + " ".join(rtl),
         "hierarchy -top " + job["core"],
@@ -123,8 +134,24 @@ def build_model(job, name, work, yosys, rtl_dir):
     return run([yosys, "-q", "-l", name + "_yosys.log", "-s", name + ".ys"], os.path.join(work, name + "_yosys.out"), work)
 
 
+def write_data(path, obj):
+    if path:
+        obj = dict(obj, date=time.strftime("%Y-%m-%d"), solver=a_solver_version())
+        with open(path, "w") as f:
+            json.dump(obj, f, indent=1)
+            f.write("\n")
+
+
+def a_solver_version():
+    try:
+        return subprocess.run(["z3", "--version"], stdout=subprocess.PIPE, universal_newlines=True).stdout.strip()
+    except OSError:
+        return None
+
+
 def run_mutants(a, work):
     bad = 0
+    results = []
     for i, (name, fname, old, new, what) in enumerate(MUTANTS):
         if name not in a.jobs.split(","):
             continue
@@ -155,9 +182,13 @@ def run_mutants(a, work):
         ok = caught == expect
         print("mutant %d %-58s %s%s" % (i, what, ("caught" if caught else "not caught") + ("" if ok else "  <- WRONG"),
                                           where if caught else ""), flush=True)
+        results.append({"job": name, "file": fname, "bug": what, "caught": caught, "expected": expect,
+                        "assertion": where.strip(" ()") if caught else None})
         if not ok:
             bad += 1
     print("formal: %s" % ("every mutant caught as expected" if bad == 0 else "%d mutant(s) wrong" % bad))
+    if bad == 0:
+        write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC})
     return 0 if bad == 0 else 1
 
 
@@ -172,6 +203,7 @@ def main():
     ap.add_argument("--rtl", default=os.path.join(ROOT, "rtl"), help="RTL directory (a mutant's, to see a proof fail)")
     ap.add_argument("--steps", default="bmc,induction,cover")
     ap.add_argument("--mutants", action="store_true", help="check that the properties fail on broken RTL")
+    ap.add_argument("--data", help="write the results as JSON (docs/data/formal.json, formal_mutants.json)")
     a = ap.parse_args()
     a.specrom = os.path.abspath(a.specrom)
 
@@ -230,13 +262,18 @@ def main():
             if step == "cover":
                 n = len(re.findall(r"Reached cover statement", text))
                 extra = " (%d reached)" % n
-            rows.append((name, what + extra, "pass" if ok else "FAIL", dt))
+            rows.append({"job": name, "step": step, "what": what, "pass": ok, "seconds": round(dt, 1),
+                         "covers": (n if step == "cover" else None)})
             print("%-12s %-40s %-5s %6.1f s" % (name, what + extra, "pass" if ok else "FAIL", dt), flush=True)
             if not ok:
                 failed += 1
                 print("  log: %s\n%s" % (log, tail(log, 12)))
         del t0
     print("formal: %s" % ("all proofs and covers passed" if failed == 0 else "%d step(s) failed" % failed))
+    if failed == 0:
+        write_data(a.data, {"steps": rows, "widths": WIDTHS,
+                            "jobs": {k: {"bmc": JOBS[k]["bmc"], "depth": JOBS[k]["depth"], "cover": JOBS[k]["cover"]}
+                                     for k in jobs}})
     return 0 if failed == 0 else 1
 
 

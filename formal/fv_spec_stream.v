@@ -36,7 +36,7 @@ module fv_spec_stream (
     input wire         clk,
     input wire         rst_n,
     input wire         s_axis_tvalid,
-    input wire [127:0] s_axis_tdata,
+    input wire [`SPEC_DESC_W-1:0] s_axis_tdata,
     input wire         m_axis_tready,
     input wire [`SPEC_OUT_W-1:0] f_px    // free: the datapath's pixel value (cut off, see formal.py)
 );
@@ -46,9 +46,9 @@ module fv_spec_stream (
     localparam L_W = `SPEC_L_W;
     localparam OUT_W = `SPEC_OUT_W;
     localparam SCALE_W = `SPEC_SCALE_W;
-    localparam TSEL_W = 2;
-    localparam LAT = 12;                                  // spec_datapath's stages (INTERP = 0)
-    localparam ACC = (ANG_W + L_W + 15) / 16 + 2;         // spec_saccum's stages
+    localparam TSEL_W = `SPEC_TSEL_W;
+    localparam LAT = `SPEC_DATAPATH_LATENCY;              // spec_datapath's stages
+    localparam ACC = `SPEC_STREAM_ACC;                    // spec_saccum's stages
     localparam SIDE_W = 1 + C_W + SCALE_W + TSEL_W;       // {last, C, scale, table} beside the accumulator
     localparam DW = C_W + N_W + L_W + 1 + 2 * ANG_W;      // a descriptor in the buffer
     localparam NS = 2 + LAT + ACC;                        // pixel stages: output, skid, datapath, accumulator
@@ -87,7 +87,7 @@ module fv_spec_stream (
     );
     wire [L_W-1:0] tail_l = tail[2 * ANG_W + 1 +: L_W];
     wire tail_single = tail[2 * ANG_W];
-    wire [L_W-1:0] d_l = s_axis_tdata[32 +: L_W];
+    wire [L_W-1:0] d_l = s_axis_tdata[`SPEC_DESC_L_LSB +: L_W];
 
     // pixel stages, oldest first: 0 output register, 1 skid buffer, 2 .. LAT+1 datapath (stage LAT first),
     // LAT+2 .. NS-1 accumulator (stage ACC first); then the span generator's current pixel, the buffer

@@ -8,14 +8,17 @@
 // start, write strobes, loads and data, only with init_n = 0 in the first cycle.
 //
 // Specification (docs/interface.md), checked cycle by cycle:
-//   - with Start accepted in cycle t (start = 1, busy_o = 0, init_n = 1), busy_o is 1 exactly in cycles
-//     t+1 .. t+FIRST+2l and valid_o is 1 exactly in cycles t+FIRST+2i, i = 0..l: l + 1 pulses, busy_o falls
-//     the cycle after the last one, for every l (and l = 2^L_W - 1 after a span without a new load);
+//   - Start is accepted in cycle t when it rises there (start = 1, and 0 in cycle t-1) with busy_o = 0 and
+//     init_n = 1; then busy_o is 1 exactly in cycles t+1 .. t+FIRST+2l and valid_o is 1 exactly in cycles
+//     t+FIRST+2i, i = 0..l: l + 1 pulses, busy_o falls the cycle after the last one, for every l, where l is
+//     the one loaded with the Start, or else the last one loaded (0 after init_n): Start held high begins one
+//     span, and a Start without a new load repeats the last l;
 //   - busy_o and valid_o are 0 outside such a window: no pulse while idle, busy never stuck;
 //   - registers 1-4 do not change while busy_o is 1 and counter 5 only counts: start, writes and loads
 //     while busy are ignored;
 //   - init_n = 0 at a clock edge: idle from the next cycle, registers, counter and output 0;
-//   - counter 5 holds what the interface promises: the last load, 2^L_W - 1 after a span, 0 after init.
+//   - counter 5 holds what the interface promises: the last load, 2^L_W - 1 after a span, 0 after init; the
+//     length register holds the last load (0 after init).
 // The helper invariants at the end (the control block's flip-flops, counter 5 and the valid pipeline as
 // functions of the cycle within the span) make the induction step short; they are proved like the rest.
 `default_nettype none
@@ -40,8 +43,8 @@ module fv_spec_unit (
     localparam N_W = `SPEC_N_W;
     localparam L_W = `SPEC_L_W;
     localparam OUT_W = `SPEC_OUT_W;
-    localparam FIRST = 15;        // pixel 0's valid_o, cycles after the accepted Start (INTERP = 0)
-    localparam LAT = 12;          // spec_datapath's stages (INTERP = 0)
+    localparam FIRST = `SPEC_UNIT_FIRST_PIXEL;  // pixel 0's valid_o, cycles after the accepted Start
+    localparam LAT = `SPEC_DATAPATH_LATENCY;    // spec_datapath's stages
     localparam TW = L_W + 7;      // cycle counter within a span: FIRST + 2 * 2^L_W + 2 fits
 
     wire [OUT_W-1:0] intensity;
@@ -50,7 +53,8 @@ module fv_spec_unit (
     wire [C_W-1:0] c_q;
     wire [ANG_W-1:0] dzeta_q, zeta0_q;
     wire [N_W-1:0] n_q;
-    wire [L_W-1:0] cnt5;
+    wire [L_W-1:0] cnt5, len_q;
+    wire start_q;
     wire ff39, gen40, ff41, ff43, ff44, fresh8;
     wire [LAT:1] vs;
 
@@ -60,16 +64,22 @@ module fv_spec_unit (
         .len_load_n(len_load_n), .intensity_o(intensity), .busy_o(busy), .valid_o(valid),
         .c_q(c_q), .dzeta_q(dzeta_q), .zeta0_q(zeta0_q), .n_q(n_q), .\u_cnt5.q (cnt5),
         .\u_ctrl14.ff39 (ff39), .\u_ctrl14.gen40 (gen40), .\u_ctrl14.ff41 (ff41), .\u_ctrl14.ff43 (ff43),
-        .\u_ctrl14.ff44 (ff44), .fresh8(fresh8), .\u_dp.vs (vs)
+        .\u_ctrl14.ff44 (ff44), .fresh8(fresh8), .\u_dp.vs (vs), .start_q(start_q), .len_q(len_q)
     );
 
     // ---- the interface's model -------------------------------------------------------------------------
-    reg f_past = 1'b0;
-    always @(posedge clk) f_past <= 1'b1;
+    reg f_past = 1'b0, f_past2 = 1'b0;
+    always @(posedge clk) begin
+        f_past <= 1'b1;
+        f_past2 <= f_past;
+    end
     always @(*) if ($initstate) assume (!init_n);
 
-    wire accept = start & ~busy & init_n;          // an accepted Start
+    reg f_start_q;                                  // Start one cycle ago
+    always @(posedge clk) f_start_q <= start;
+    wire accept = start & ~f_start_q & ~busy & init_n;   // an accepted Start: a rising edge while idle
     reg [L_W-1:0] f_len;                            // counter 5 as docs/interface.md describes it
+    reg [L_W-1:0] f_lenreg;                         // the length register: the last l loaded
     reg f_run;                                      // inside a span's busy window
     reg [TW-1:0] f_t;                               // cycles since the accepted Start
     reg [L_W-1:0] f_l;                              // the span's l
@@ -78,14 +88,17 @@ module fv_spec_unit (
     always @(posedge clk) begin
         if (!init_n) begin
             f_len <= {L_W{1'b0}};
+            f_lenreg <= {L_W{1'b0}};
             f_run <= 1'b0;
         end else begin
+            if (!len_load_n && !busy) f_lenreg <= len_i;
             if (!len_load_n && !busy) f_len <= len_i;
+            else if (accept) f_len <= f_lenreg;                     // reloaded from the length register
             else if (f_run && f_t == f_end) f_len <= {L_W{1'b1}};   // the span ends on the 0 -> max step
             if (accept) begin
                 f_run <= 1'b1;
                 f_t <= 1;
-                f_l <= (!len_load_n) ? len_i : f_len;
+                f_l <= (!len_load_n) ? len_i : f_lenreg;
                 f_px <= 0;
             end else if (f_run) begin
                 f_t <= f_t + 1'b1;
@@ -107,8 +120,10 @@ module fv_spec_unit (
             if (valid) assert (busy);
             // the pulses counted: at the last one, l of them have gone before
             if (f_run && f_t == f_end) assert (valid && f_px == f_l);
-            // counter 5 as documented, while idle (during a span it counts, below)
+            // counter 5 as documented, while idle (during a span it counts, below); the length register
             if (!busy) assert (cnt5 == f_len);
+            assert (len_q == f_lenreg);
+            if (f_past2) assert (start_q == f_start_q);
         end
     end
     always @(posedge clk) begin
@@ -191,7 +206,8 @@ module fv_spec_unit (
             cover (f_done && f_l == {L_W{1'b1}});                  // the longest span
             cover (f_done && f_chain);                             // back-to-back spans
             cover (f_done && f_noise && f_l == 2);                 // Start/writes/loads while busy, ignored
-            cover (f_done && f_reload == 0 && f_l == {L_W{1'b1}}); // Start without a load: 2^L_W pixels
+            cover (f_done && f_reload == 0 && f_l == 3);           // Start without a load: the last l again
+            cover (f_done && f_l == 2 && start);                   // Start still held high at a span's end
         end
         if (f_past && f_run && !init_n) cover (f_t > FIRST);      // init_n low after the first pixel
     end

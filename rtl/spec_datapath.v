@@ -61,16 +61,19 @@ module spec_datapath #(
     );
 
     // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
-    wire [TSEL_W-1:0] tsel4;
-    spec_delay #(.W(TSEL_W), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel4));
+    wire [TSEL_W-1:0] tsel_rom;   // the table, delayed to meet multiplier 11's position
+    spec_delay #(.W(TSEL_W), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel_rom));
     wire [WORD_W-1:0] word12, word_q;
-    spec_rom12 #(.TBL_AW(TBL_AW), .TSEL_W(TSEL_W), .WORD_W(WORD_W), .INIT_FILE(ROM12_FILE)) u_rom12 (
-        .clk(clk), .en(ce), .table_sel(tsel4), .index(index11), .value(word12)
+    spec_rom12 #(
+        .TBL_AW(TBL_AW), .TSEL_W(TSEL_W), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .DELTA_W(DELTA_W), .WORD_W(WORD_W),
+        .INIT_FILE(ROM12_FILE)
+    ) u_rom12 (
+        .clk(clk), .en(ce), .table_sel(tsel_rom), .index(index11), .value(word12)
     );
     // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5)
     spec_delay #(.W(WORD_W), .N(1)) u_word (.clk(clk), .ce(ce), .d(word12), .q(word_q));
-    wire [FRAC_W-1:0] frac5;
-    spec_delay #(.W(FRAC_W), .N(2)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac5));
+    wire [FRAC_W-1:0] frac_interp;   // the position's fraction, delayed to meet the table word
+    spec_delay #(.W(FRAC_W), .N(2)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac_interp));
     wire zero_m;
     spec_delay #(.W(1), .N(VS - M11)) u_zero (.clk(clk), .ce(ce), .d(zero11), .q(zero_m));
 
@@ -79,11 +82,11 @@ module spec_datapath #(
     generate
         if (INTERP != 0) begin : g_interp
             spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC)) u_interp (
-                .clk(clk), .ce(ce), .word(word_q), .frac(frac5), .value(value_m)
+                .clk(clk), .ce(ce), .word(word_q), .frac(frac_interp), .value(value_m)
             );
         end else begin : g_plain
             wire unused_frac;
-            assign unused_frac = &{1'b0, frac5};
+            assign unused_frac = &{1'b0, frac_interp};
             assign value_m = word_q;
         end
     endgenerate

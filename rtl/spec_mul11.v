@@ -37,23 +37,23 @@ module spec_mul11 #(
     localparam DROP = PROD_FRAC - TBL_AW;  // fraction bits below the table position
 
     // stages 1 to 3: |angle|; -2^(ANG_W-1) becomes 2^(ANG_W-1), which fits ANG_W unsigned bits
-    reg [ANG_W-1:0] inv0;
-    reg neg0;
-    reg [H:0] lo1;
-    reg [ANG_W-H-1:0] hi1, mag_hi;
+    reg [ANG_W-1:0] ang_inv;
+    reg ang_neg;
+    reg [H:0] lo_plus;
+    reg [ANG_W-H-1:0] hi_inv, mag_hi;
     reg [H-1:0] mag_lo;
-    reg [SCALE_W-1:0] scale0, scale1, scale2;
+    reg [SCALE_W-1:0] scale_a, scale_b, scale_c;
     always @(posedge clk) begin
         if (ce) begin
-            inv0 <= angle ^ {ANG_W{angle[ANG_W-1]}};
-            neg0 <= angle[ANG_W-1];
-            scale0 <= scale;
-            lo1 <= {1'b0, inv0[H-1:0]} + {{H{1'b0}}, neg0};
-            hi1 <= inv0[ANG_W-1:H];
-            scale1 <= scale0;
-            mag_lo <= lo1[H-1:0];
-            mag_hi <= hi1 + {{(ANG_W - H - 1) {1'b0}}, lo1[H]};
-            scale2 <= scale1;
+            ang_inv <= angle ^ {ANG_W{angle[ANG_W-1]}};
+            ang_neg <= angle[ANG_W-1];
+            scale_a <= scale;
+            lo_plus <= {1'b0, ang_inv[H-1:0]} + {{H{1'b0}}, ang_neg};
+            hi_inv <= ang_inv[ANG_W-1:H];
+            scale_b <= scale_a;
+            mag_lo <= lo_plus[H-1:0];
+            mag_hi <= hi_inv + {{(ANG_W - H - 1) {1'b0}}, lo_plus[H]};
+            scale_c <= scale_b;
         end
     end
 
@@ -62,27 +62,27 @@ module spec_mul11 #(
     reg [LW-1:0] pp_lo, pp_hi;
     always @(posedge clk) begin
         if (ce) begin
-            pp_lo <= {{SCALE_W{1'b0}}, mag_lo} * {{H{1'b0}}, scale2};
-            pp_hi <= {{SCALE_W{1'b0}}, mag_hi} * {{H{1'b0}}, scale2};
+            pp_lo <= {{SCALE_W{1'b0}}, mag_lo} * {{H{1'b0}}, scale_c};
+            pp_hi <= {{SCALE_W{1'b0}}, mag_hi} * {{H{1'b0}}, scale_c};
         end
     end
 
     // stages 5 and 6: prod = (pp_hi + pp_lo[LW-1:H]) * 2^H + pp_lo[H-1:0], the addition in two halves
-    reg [SCALE_W:0] mid4;
-    reg [H-1:0] low4, low5, top4;
-    reg [SCALE_W-1:0] mid5;
-    reg [H-1:0] top5;
+    reg [SCALE_W:0] mid_sum;
+    reg [H-1:0] low_part, prod_low, top_part;
+    reg [SCALE_W-1:0] prod_mid;
+    reg [H-1:0] prod_top;
     always @(posedge clk) begin
         if (ce) begin
-            mid4 <= {1'b0, pp_hi[SCALE_W-1:0]} + {1'b0, pp_lo[LW-1:H]};
-            top4 <= pp_hi[LW-1:SCALE_W];
-            low4 <= pp_lo[H-1:0];
-            top5 <= top4 + {{(H - 1) {1'b0}}, mid4[SCALE_W]};
-            mid5 <= mid4[SCALE_W-1:0];
-            low5 <= low4;
+            mid_sum <= {1'b0, pp_hi[SCALE_W-1:0]} + {1'b0, pp_lo[LW-1:H]};
+            top_part <= pp_hi[LW-1:SCALE_W];
+            low_part <= pp_lo[H-1:0];
+            prod_top <= top_part + {{(H - 1) {1'b0}}, mid_sum[SCALE_W]};
+            prod_mid <= mid_sum[SCALE_W-1:0];
+            prod_low <= low_part;
         end
     end
-    wire [PW-1:0] prod = {top5, mid5, low5};
+    wire [PW-1:0] prod = {prod_top, prod_mid, prod_low};
 
     // stage 7: the table position
     wire past_int = |prod[PW-1:PROD_FRAC];   // >= one quarter turn

@@ -2,37 +2,32 @@
 // an AXI4-Stream sink, pixels out through an AXI4-Stream source. Same datapath modules as spec_unit
 // (ROM 9, decoder 10, adder 6 / register 8, multiplier 11, ROM 12, multiplier 13), same pixels bit for bit.
 //
-// Descriptor (s_axis_tdata, DESC_W = 128 bits; unused bits are ignored):
-//   [C_W-1:0]            C       UQ0.C_W                     (register 1)
-//   [16 +: N_W]          n       0 .. 2^N_W - 1              (register 4)
-//   [32 +: L_W]          l       intervals, l + 1 pixels     (counter 5)
-//   [64 +: ANG_W]        zeta0   start angle, two's complement, ANG_FRAC fraction bits (register 3)
-//   [96 +: ANG_W]        dzeta   angle step, same format     (register 2)
+// Descriptor (s_axis_tdata, DESC_W bits; the layout is the generator's, rom/spec_params.vh; bits outside the
+// fields are ignored). Default widths: C [15:0], n [25:16], l [47:32], zeta0 [95:64], dzeta [127:96], 128 bits.
+//   [DESC_C_LSB +: C_W]          C       UQ0.C_W                     (register 1)
+//   [DESC_N_LSB +: N_W]          n       0 .. 2^N_W - 1              (register 4)
+//   [DESC_L_LSB +: L_W]          l       intervals, l + 1 pixels     (counter 5)
+//   [DESC_ZETA0_LSB +: ANG_W]    zeta0   start angle, two's complement, ANG_FRAC fraction bits (register 3)
+//   [DESC_DZETA_LSB +: ANG_W]    dzeta   angle step, same format     (register 2)
+// Fields outside DESC_W or overlapping stop elaboration (spec_parameter_error_... modules, as spec_param_check).
 // Pixels (m_axis_tdata, OUT_W bits): intensity UQ0.OUT_W; m_axis_tlast = 1 on a span's last pixel.
 //
 // Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
 // span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 3 + ACC + LAT = a + 20 (a + 22 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
+// a + 3 + ACC + LAT = a + `SPEC_STREAM_LATENCY (20; 22 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
 // datapath (LAT = 12 or 14), output register. Backpressure: every pipeline stage advances only when the output
 // register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
 // m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
 // 1 while the descriptor buffer's second entry is free.
-// Reset: rst_n is synchronous, active low. At an edge where it is 0 the buffer, the span generator and the
-// pipeline's valid flags are cleared: m_axis_tvalid = 0 from the next cycle and no pixel of a span in
-// progress appears later; s_axis_tready is 0 in the cycle after a reset edge and 1 from the one after.
+// Reset: rst_n is synchronous, active low. At an edge where it is 0 the buffer, the span generator, the
+// pipeline's valid flags and the output registers are cleared: m_axis_tvalid = 0 (and tdata, tlast = 0) from
+// the next cycle and no pixel of a span in progress appears later; s_axis_tready is 0 in the cycle after a
+// reset edge and 1 from the one after.
 // A descriptor handed over in a cycle with rst_n = 0 is dropped.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
-// The patent's default header (rom/spec_params.vh) has no table field in ROM 9: decoder 10's gates choose.
-// Headers of tuned mode or other table sets (specrom --mode tuned, --tables) define both (docs/tuned.md).
-`ifndef SPEC_DECODER_ROM
-`define SPEC_DECODER_ROM 0
-`endif
-`ifndef SPEC_TSEL_W
-`define SPEC_TSEL_W 2
-`endif
 module spec_stream #(
     parameter C_W = `SPEC_C_W,
     parameter ANG_W = `SPEC_ANG_W,
@@ -47,11 +42,16 @@ module spec_stream #(
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
     parameter DELTA_W = `SPEC_DELTA_W,
-    parameter DECODER_ROM = `SPEC_DECODER_ROM,   // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
-    parameter TSEL_W = `SPEC_TSEL_W,             // ROM 12 table index width (2 with DECODER_ROM = 0)
+    parameter DECODER_ROM = `SPEC_DECODER_ROM,  // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
+    parameter TSEL_W = `SPEC_TSEL_W,            // ROM 12 table index width (2 with DECODER_ROM = 0)
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
-    parameter DESC_W = 128
+    parameter DESC_W = `SPEC_DESC_W,
+    parameter DESC_C_LSB = `SPEC_DESC_C_LSB,
+    parameter DESC_N_LSB = `SPEC_DESC_N_LSB,
+    parameter DESC_L_LSB = `SPEC_DESC_L_LSB,
+    parameter DESC_ZETA0_LSB = `SPEC_DESC_ZETA0_LSB,
+    parameter DESC_DZETA_LSB = `SPEC_DESC_DZETA_LSB
 ) (
     input  wire              clk,
     input  wire              rst_n,
@@ -65,12 +65,37 @@ module spec_stream #(
 );
     wire rst = ~rst_n;
 
+    spec_param_check #(
+        .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
+        .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
+    ) u_check ();
+    // the descriptor's fields lie inside DESC_W and do not overlap
+    localparam C_END = DESC_C_LSB + C_W, N_END = DESC_N_LSB + N_W, L_END = DESC_L_LSB + L_W;
+    localparam Z_END = DESC_ZETA0_LSB + ANG_W, D_END = DESC_DZETA_LSB + ANG_W;
+    generate
+        if (DESC_C_LSB < 0 || DESC_N_LSB < 0 || DESC_L_LSB < 0 || DESC_ZETA0_LSB < 0 || DESC_DZETA_LSB < 0 ||
+            C_END > DESC_W || N_END > DESC_W || L_END > DESC_W || Z_END > DESC_W || D_END > DESC_W)
+        begin : g_desc_inside
+            spec_parameter_error_a_descriptor_field_lies_outside_DESC_W check_the_DESC_LSB_parameters ();
+        end
+        if (!(C_END <= DESC_N_LSB || N_END <= DESC_C_LSB) || !(C_END <= DESC_L_LSB || L_END <= DESC_C_LSB) ||
+            !(C_END <= DESC_ZETA0_LSB || Z_END <= DESC_C_LSB) || !(C_END <= DESC_DZETA_LSB || D_END <= DESC_C_LSB) ||
+            !(N_END <= DESC_L_LSB || L_END <= DESC_N_LSB) || !(N_END <= DESC_ZETA0_LSB || Z_END <= DESC_N_LSB) ||
+            !(N_END <= DESC_DZETA_LSB || D_END <= DESC_N_LSB) || !(L_END <= DESC_ZETA0_LSB || Z_END <= DESC_L_LSB) ||
+            !(L_END <= DESC_DZETA_LSB || D_END <= DESC_L_LSB) ||
+            !(Z_END <= DESC_DZETA_LSB || D_END <= DESC_ZETA0_LSB))
+        begin : g_desc_overlap
+            spec_parameter_error_descriptor_fields_overlap check_the_DESC_LSB_parameters ();
+        end
+    endgenerate
+
     // descriptor fields
-    wire [C_W-1:0] d_c = s_axis_tdata[C_W-1:0];
-    wire [N_W-1:0] d_n = s_axis_tdata[16 +: N_W];
-    wire [L_W-1:0] d_l = s_axis_tdata[32 +: L_W];
-    wire [ANG_W-1:0] d_zeta0 = s_axis_tdata[64 +: ANG_W];
-    wire [ANG_W-1:0] d_dzeta = s_axis_tdata[96 +: ANG_W];
+    wire [C_W-1:0] d_c = s_axis_tdata[DESC_C_LSB +: C_W];
+    wire [N_W-1:0] d_n = s_axis_tdata[DESC_N_LSB +: N_W];
+    wire [L_W-1:0] d_l = s_axis_tdata[DESC_L_LSB +: L_W];
+    wire [ANG_W-1:0] d_zeta0 = s_axis_tdata[DESC_ZETA0_LSB +: ANG_W];
+    wire [ANG_W-1:0] d_dzeta = s_axis_tdata[DESC_DZETA_LSB +: ANG_W];
     wire unused_desc;   // the reserved bits between the fields
     assign unused_desc = &{1'b0, s_axis_tdata};
 
@@ -115,12 +140,14 @@ module spec_stream #(
 
     // ROM 9, read as the span starts: its word is the current span's scale (and, with DECODER_ROM = 1, its
     // table) from the span's first pixel on
-    localparam R9_W = SCALE_W + ((DECODER_ROM != 0) ? TSEL_W : 0);
-    wire [R9_W-1:0] rom9_word;
-    spec_rom #(.AW(N_W), .DW(R9_W), .INIT_FILE(ROM9_FILE)) u_rom9 (
-        .clk(clk), .en(take), .addr(head_n), .data(rom9_word)
+    wire [SCALE_W-1:0] cur_scale;
+    wire [TSEL_W-1:0] rom_tsel;
+    spec_rom9 #(
+        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
+        .INIT_FILE(ROM9_FILE)
+    ) u_rom9 (
+        .clk(clk), .en(take), .n(head_n), .scale(cur_scale), .table_sel(rom_tsel)
     );
-    wire [SCALE_W-1:0] cur_scale = rom9_word[SCALE_W-1:0];
     // decoder 10 on the head's n (DECODER_ROM = 0)
     wire [1:0] head_tsel;
     wire d30_unused, d31_unused, d32_unused, d33_unused;
@@ -162,11 +189,13 @@ module spec_stream #(
     wire [TSEL_W-1:0] cur_tsel;
     generate
         if (DECODER_ROM != 0) begin : g_dec_rom
-            assign cur_tsel = rom9_word[R9_W-1:SCALE_W];
+            assign cur_tsel = rom_tsel;
             wire unused_gates;
             assign unused_gates = &{1'b0, cur_gate_tsel};
         end else begin : g_dec_gates
             assign cur_tsel = cur_gate_tsel;
+            wire unused_rom;
+            assign unused_rom = &{1'b0, rom_tsel};
         end
     endgenerate
 
@@ -225,7 +254,10 @@ module spec_stream #(
             skid_data <= dp_out;
             skid_last <= dp_last;
         end
-        if (o_load) begin
+        if (rst) begin                      // defined from the first reset on (4-state simulators)
+            m_axis_tdata <= {OUT_W{1'b0}};
+            m_axis_tlast <= 1'b0;
+        end else if (o_load) begin
             m_axis_tdata <= skid_v ? skid_data : dp_out;
             m_axis_tlast <= skid_v ? skid_last : dp_last;
         end

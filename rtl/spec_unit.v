@@ -9,21 +9,16 @@
 //   n      0 .. 2^N_W - 1                   register 4 (inputs 21, 22)
 //   l      0 .. 2^L_W - 1 intervals         counter 5 (inputs 23, 24): l + 1 pixels
 //   out    UQ0.OUT_W                        output 27
-// Timing (see docs/interface.md): with Start in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
-// is in cycle t + 15 + 2i (t + 17 + 2i with INTERP = 1); busy_o falls in the cycle after the last valid_o.
-// Start, register writes and counter loads are ignored while busy_o is 1; init_n = 0 at a clock edge
-// returns to idle (busy_o = 0, valid_o = 0 from the next cycle) and clears every register.
+// Start (26) acts on its rising edge, as the patent's flip-flop 39 is clocked by it: Start held high begins
+// one span. A span runs the registers as they are: a Start without a new load of counter 5 runs the last
+// loaded l again (a length register keeps it), never the 2^L_W pixels of a counter left at its maximum.
+// Timing (see docs/interface.md): with Start rising in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
+// is in cycle t + `SPEC_UNIT_FIRST_PIXEL + 2i (15 + 2i; 17 + 2i with INTERP = 1); busy_o falls in the cycle
+// after the last valid_o. Start, register writes and counter loads are ignored while busy_o is 1; init_n = 0
+// at a clock edge returns to idle (busy_o = 0, valid_o = 0 from the next cycle) and clears every register.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
-// The patent's default header (rom/spec_params.vh) has no table field in ROM 9: decoder 10's gates choose.
-// Headers of tuned mode or other table sets (specrom --mode tuned, --tables) define both (docs/tuned.md).
-`ifndef SPEC_DECODER_ROM
-`define SPEC_DECODER_ROM 0
-`endif
-`ifndef SPEC_TSEL_W
-`define SPEC_TSEL_W 2
-`endif
 module spec_unit #(
     parameter C_W = `SPEC_C_W,
     parameter ANG_W = `SPEC_ANG_W,
@@ -38,14 +33,14 @@ module spec_unit #(
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
     parameter DELTA_W = `SPEC_DELTA_W,
-    parameter DECODER_ROM = `SPEC_DECODER_ROM,   // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
-    parameter TSEL_W = `SPEC_TSEL_W,             // ROM 12 table index width (2 with DECODER_ROM = 0)
+    parameter DECODER_ROM = `SPEC_DECODER_ROM,  // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
+    parameter TSEL_W = `SPEC_TSEL_W,            // ROM 12 table index width (2 with DECODER_ROM = 0)
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE
 ) (
     input  wire             clk,
     input  wire             init_n,      // 25  initial set, active low (synchronous)
-    input  wire             start,       // 26  "Start"
+    input  wire             start,       // 26  "Start" (its rising edge)
     input  wire [C_W-1:0]   c_i,         // 15  C
     input  wire             c_we,        // 16
     input  wire [ANG_W-1:0] dzeta_i,     // 17  angle step
@@ -62,6 +57,18 @@ module spec_unit #(
 );
     wire rst = ~init_n;
     wire idle = ~busy_o;
+
+    spec_param_check #(
+        .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
+        .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
+    ) u_check ();
+
+    // Start (26) on its rising edge: flip-flop 39 is clocked by Start in the patent. start_q is Start one clock
+    // ago (not reset: after init_n, Start must rise again to begin a span).
+    reg start_q;
+    always @(posedge clk) start_q <= start;
+    wire start_go = start & ~start_q & idle;
 
     // Control block 14 and its signals (public for the Fig. 11 trace of the Verilator harness).
     wire sig28 /*verilator public_flat_rd*/;
@@ -93,10 +100,15 @@ module spec_unit #(
     spec_reg #(.W(ANG_W)) u_reg3 (.clk(clk), .rst(rst), .we(zeta0_we & idle), .d(zeta0_i), .q(zeta0_q));
     spec_reg #(.W(N_W))   u_reg4 (.clk(clk), .rst(rst), .we(n_we & idle),     .d(n_i),     .q(n_q));
 
-    // Down-counter 5
+    // Down-counter 5, loaded by strobe 24 (active low) with l from input 23, and again from the length
+    // register when a span starts: a Start without a new load runs the last loaded l, not the 2^L_W pixels of
+    // the counter's maximum, where the patent's counter is left after a span (docs/decisions.md).
+    wire len_we = ~len_load_n & idle;
+    wire [L_W-1:0] len_q;
+    spec_reg #(.W(L_W)) u_len (.clk(clk), .rst(rst), .we(len_we), .d(len_i), .q(len_q));
     wire [L_W-1:0] count_q;
     spec_counter #(.W(L_W)) u_cnt5 (
-        .clk(clk), .rst(rst), .load_n(len_load_n | busy_o), .d(len_i),
+        .clk(clk), .rst(rst), .load_n(~(len_we | start_go)), .d(len_we ? len_i : len_q),
         .count(sig34), .q(count_q), .borrow_n(sig35)
     );
     wire unused_count;
@@ -104,7 +116,7 @@ module spec_unit #(
 
     // Control block 14
     spec_ctrl u_ctrl14 (
-        .clk(clk), .init_n(init_n), .start(start & idle), .borrow_n(sig35),
+        .clk(clk), .init_n(init_n), .start(start_go), .borrow_n(sig35),
         .sig28(sig28), .sig34(sig34), .sig36(sig36), .sig37(sig37)
     );
 
@@ -120,9 +132,10 @@ module spec_unit #(
     wire [SCALE_W-1:0] scale9;
     wire [TSEL_W-1:0] rom_tsel;
     spec_rom9 #(
-        .N_W(N_W), .SCALE_W(SCALE_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .INIT_FILE(ROM9_FILE)
+        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
+        .INIT_FILE(ROM9_FILE)
     ) u_rom9 (
-        .clk(clk), .n(n_q), .scale(scale9), .table_sel(rom_tsel)
+        .clk(clk), .en(1'b1), .n(n_q), .scale(scale9), .table_sel(rom_tsel)
     );
     wire [1:0] gate_tsel;
     spec_decoder #(.N_W(N_W)) u_dec10 (

@@ -51,6 +51,7 @@ def main():
     ap.add_argument("--allow", default="", help="comma-separated files exempt from --goal")
     ap.add_argument("--uncovered", action="store_true")
     ap.add_argument("--markdown", action="store_true")
+    ap.add_argument("--json", default="", help="also write the per-file counts as JSON (docs/data/coverage.json)")
     a = ap.parse_args()
 
     files = []
@@ -140,6 +141,14 @@ def main():
         print("coverage: line coverage below %.0f %% in %s" % (a.goal, ", ".join(below)), file=sys.stderr)
     if below or nodata:
         return 1
+    if a.json:
+        import json
+        import time
+        with open(a.json, "w") as fh:
+            json.dump({"date": time.strftime("%Y-%m-%d"), "goal_line_pct": a.goal,
+                       "files": {f: {"line": per[f]["line"], "toggle": per[f]["toggle"]} for f in rtl_files},
+                       "all": {"line": tot_l, "toggle": tot_t}, "coverage_files": len(files)}, fh, indent=1)
+            fh.write("\n")
     return 0
 
 

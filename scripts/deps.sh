@@ -3,7 +3,8 @@
 # Usage: scripts/deps.sh [extra packages...]
 set -euo pipefail
 pkgs=(cmake make g++ verilator iverilog yosys libgtest-dev
-      libglm-dev libpng-dev libtinyobjloader-dev libstb-dev gnuplot-nox python3 "$@")
+      libglm-dev libpng-dev libtinyobjloader-dev libstb-dev gnuplot-nox python3
+      glslang-tools libosmesa6-dev "$@")  # the last two: the GLSL versions of the companion methods (docs/methods.md)
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "deps: not a Debian system; install these yourself: ${pkgs[*]}" >&2
     exit 1

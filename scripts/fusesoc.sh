@@ -24,6 +24,9 @@ fusesoc --cores-root "$root" run --target sim $core --vectors="$work/vectors.hex
 grep -q PASS sim.log || { echo "fusesoc: the simulation did not report PASS" >&2; exit 1; }
 grep PASS sim.log
 echo "fusesoc: synth (icestorm flow, UP5K configuration)"
+python3 "$root/syn/rom_check.py" --header "$root/rom/spec_params.vh" --rom9 "$work/rom_up5k/rom9_scale.hex" \
+    --rom12 "$work/rom_up5k/rom12_cosk.hex" -GTBL_AW=8 -GINTERP=1 -GINTERP_FRAC=10 -GDELTA_W=10 -GSCALE_W=16 \
+    -GSCALE_FRAC=13
 fusesoc --cores-root "$root" run --target synth $core --ROM9_FILE="$work/rom_up5k/rom9_scale.hex" \
     --ROM12_FILE="$work/rom_up5k/rom12_cosk.hex" > synth.log 2>&1 || { tail -20 synth.log; exit 1; }
 grep -E "ICESTORM_(LC|RAM|DSP):|Max frequency" synth.log | tail -4

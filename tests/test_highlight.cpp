@@ -319,10 +319,23 @@ TEST(MethodsCli, SubcommandsPrintTheirTables) {
     const CliRun n = specsim("normalize --size 64 --runs 3 --scene sphere-lo");
     ASSERT_EQ(n.code, 0) << n.err;
     EXPECT_NE(n.out.find("| sphere-lo |"), std::string::npos) << n.out;
-    EXPECT_NE(n.out.find("| 16 deg |"), std::string::npos);
-    const CliRun p = specsim("parallax --map waves --map-size 64 --grid 4 --max-iter 8");
+    EXPECT_NE(n.out.find("| 16° |"), std::string::npos);
+    const CliRun p = specsim("parallax --map waves --map-size 64 --grid 4 --max-iter 8 --budgets 1,8");
     ASSERT_EQ(p.code, 0) << p.err;
-    EXPECT_NE(p.out.find("| 30 deg |"), std::string::npos) << p.out;
+    EXPECT_NE(p.out.find("| waves | 30° |"), std::string::npos) << p.out;
+}
+
+// Every companion command answers --help (and -h) with its usage on stdout and exit 0, whatever else is given.
+TEST(MethodsCli, EveryCommandAnswersHelp) {
+    for (const char* cmd : {"highlight", "normalize", "parallax"}) {
+        for (const char* flag : {"--help", "-h", "--size 8 --help"}) {
+            const CliRun r = specsim(std::string(cmd) + " " + flag);
+            EXPECT_EQ(r.code, 0) << cmd << " " << flag << ": " << r.err;
+            EXPECT_EQ(r.err, "") << cmd << " " << flag;
+            EXPECT_NE(r.out.find(std::string("  ") + cmd), std::string::npos) << cmd << " " << flag << ": " << r.out;
+            EXPECT_NE(r.out.find("--tables FILE"), std::string::npos) << cmd;
+        }
+    }
 }
 
 TEST(MethodsCli, BadInputGetsOneLineAndExitCode2) {
@@ -331,6 +344,8 @@ TEST(MethodsCli, BadInputGetsOneLineAndExitCode2) {
           "highlight --samples", "normalize --diffuse-bound 0", "normalize --specular-bound 0.7",
           "normalize --scene nope", "normalize --runs 2", "parallax --map nope", "parallax --map-size 100",
           "parallax --depth 0", "parallax --threshold -1", "parallax --max-iter 0", "parallax --grid x",
+          "parallax --max-iter 64", "parallax --budgets 4,2", "parallax --budgets 0", "parallax --budgets 1,,2",
+          "highlight --coarse-n 1024", "highlight --samples 10", "normalize --timing 1", "normalize --extend linear",
           "render --cull-specular yes --out " + d + "/x.png"}) {
         const CliRun r = specsim(args + " --out-dir " + d);
         EXPECT_EQ(r.code, 2) << args;

@@ -109,9 +109,9 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
         }
         t.s_axis_tvalid = offering;
         if (offering) {
-            uint32_t w[4];
+            uint32_t w[kDescWords];
             pack_descriptor(cur, w);
-            for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+            for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
         }
         t.m_axis_tready = std::bernoulli_distribution(p_ready)(rng);
         t.rst_n = !reset_now;

@@ -8,6 +8,7 @@
 
 #include "Vparallax_step.h"
 #include "parallax.h"
+#include "parallax_fixed.h"
 #include "verilated.h"
 
 using namespace spec::methods;
@@ -75,8 +76,8 @@ TEST(Parallax, LinearSearchConvergesToTheExactIntersection) {
             const View V = view_from_angles(10 + 75 * u01(rng), 360 * u01(rng));
             const double u0 = u01(rng), v0 = u01(rng);
             const Hit e = exact(m, 0.06, u0, v0, V);
-            const Hit l = linear_search(m, 0.06, u0, v0, V, 3000, 30);
-            EXPECT_LE(l.iterations, 3030);
+            const Hit l = search(m, 0.06, u0, v0, V, 3000, 30, false, SearchEnd::midpoint);
+            EXPECT_LE(l.fetches, 3030);
             EXPECT_LE(l.t, e.t + 1e-9) << name;  // never above the nearest intersection
             agree += std::fabs(l.t - e.t) < 1e-8;
         }
@@ -207,7 +208,7 @@ int64_t sext(uint64_t x, int w) {
 }  // namespace
 
 // rtl/parallax_step.v against step_fixed: random words of every width (saturation and wrap included),
-// in-range steps, and whole iterations traced from iterative_fixed; one step per clock, two cycles latency.
+// in-range steps, and whole iterations traced from iterative_fixed; one step per clock, seven cycles latency.
 TEST(ParallaxStepRtl, BitExactAgainstModel) {
     const StepFormat fmt;
     Dut<Vparallax_step> d;
@@ -238,8 +239,9 @@ TEST(ParallaxStepRtl, BitExactAgainstModel) {
                             std::llround(std::ldexp(V.h, fmt.v_f)), 0, 12, &ins);
         }
     }
+    constexpr size_t kLatency = 7;  // parallax_step's pipeline stages
     size_t checked = 0;
-    for (size_t k = 0; k < ins.size() + 2; ++k) {
+    for (size_t k = 0; k < ins.size() + kLatency; ++k) {
         if (k < ins.size()) {
             const StepIn& in = ins[k];
             d->in_valid = 1;
@@ -255,15 +257,18 @@ TEST(ParallaxStepRtl, BitExactAgainstModel) {
             d->in_valid = 0;
         }
         d.tick();
-        if (k >= 1 && k - 1 < ins.size()) {
-            // outputs now (after k + 1 edges) belong to the input presented at k - 1
+        if (k + 1 >= kLatency && k + 1 - kLatency < ins.size()) {
+            // outputs now (after k + 1 edges) belong to the input presented at k + 1 - kLatency
+            const size_t j = k + 1 - kLatency;
             ASSERT_TRUE(d->out_valid) << k;
-            const StepOut o = step_fixed(fmt, ins[k - 1]);
-            ASSERT_EQ(sext(d->u_o, fmt.uv_w), o.u) << "step " << k - 1;
-            ASSERT_EQ(sext(d->v_o, fmt.uv_w), o.v) << "step " << k - 1;
-            ASSERT_EQ(sext(d->hv_o, fmt.h_w), o.hv) << "step " << k - 1;
-            ASSERT_EQ(sext(d->d_o, fmt.h_w), o.d) << "step " << k - 1;
+            const StepOut o = step_fixed(fmt, ins[j]);
+            ASSERT_EQ(sext(d->u_o, fmt.uv_w), o.u) << "step " << j;
+            ASSERT_EQ(sext(d->v_o, fmt.uv_w), o.v) << "step " << j;
+            ASSERT_EQ(sext(d->hv_o, fmt.h_w), o.hv) << "step " << j;
+            ASSERT_EQ(sext(d->d_o, fmt.h_w), o.d) << "step " << j;
             ++checked;
+        } else {
+            ASSERT_FALSE(d->out_valid) << k;
         }
     }
     EXPECT_EQ(checked, ins.size());

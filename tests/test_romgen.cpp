@@ -83,13 +83,20 @@ TEST(RomGen, TableSizeIsAParameter) {
     auto r12 = make_rom12(f);
     EXPECT_EQ(r12.size(), 4u << 8);
     const std::string dir = ::testing::TempDir();
-    write_all(f, dir);
+    write_all(f, dir, "rom/");
     std::ifstream vh(dir + "/spec_params.vh");
     std::stringstream ss;
     ss << vh.rdbuf();
     EXPECT_NE(ss.str().find("`define SPEC_TBL_AW 8"), std::string::npos);
     std::ifstream hx(dir + "/rom12_cosk.hex");
     int lines = 0;
-    for (std::string l; std::getline(hx, l);) ++lines;
+    std::string first;
+    for (std::string l; std::getline(hx, l);) {
+        if (first.empty()) first = l;
+        else ++lines;
+    }
     EXPECT_EQ(lines, 4 << 8);
+    // the first line names the parameters the image was made for (the RTL reads it back at time 0)
+    EXPECT_EQ(first, rom12_header(f));
+    EXPECT_NE(first.find("tbl_aw=8 tsel_w=2 tbl_frac=16 interp=0"), std::string::npos);
 }

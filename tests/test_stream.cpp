@@ -137,14 +137,14 @@ TEST(SpecStream, ResetInTheMiddleOfASpan) {
     for (int cut = 1; cut < 60; cut += 3) {
         // start a long span (and queue a second), reset after `cut` cycles
         SpanRegs r{0xffff, m.quantize_angle(0.001), m.quantize_angle(-0.05), 50, 100};
-        uint32_t w[4];
+        uint32_t w[kDescWords];
         pack_descriptor(r, w);
         auto& t = d.top();
         t.m_axis_tready = 1;
         int accepted = 0;
         for (int c = 0; c < cut; ++c) {
             t.s_axis_tvalid = accepted < 2;
-            for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+            for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
             t.eval();
             if (t.s_axis_tvalid && t.s_axis_tready) ++accepted;
             d.step();

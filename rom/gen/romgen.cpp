@@ -106,10 +106,12 @@ std::vector<uint64_t> make_rom12(const Format& f) {
     return rom;
 }
 
-std::string hex_image(const std::vector<uint64_t>& words, int width, const std::string& what) {
+std::string hex_image(const std::vector<uint64_t>& words, int width, const std::string& what,
+                      const std::string& header) {
     const int digits = (width + 3) / 4;
     std::string out;
-    out.reserve(words.size() * (digits + 1));
+    out.reserve(header.size() + 1 + words.size() * (digits + 1));
+    if (!header.empty()) out += header + "\n";
     char buf[24];
     for (size_t a = 0; a < words.size(); ++a) {
         if (width < 64 && (words[a] >> width) != 0) {
@@ -123,13 +125,40 @@ std::string hex_image(const std::vector<uint64_t>& words, int width, const std::
 }
 
 namespace {
+std::string tables_text(const Format& f) {
+    std::string t;
+    for (size_t i = 0; i < f.tables.size(); ++i) t += (i ? "," : "") + std::to_string(f.tables[i]);
+    return t;
+}
+}  // namespace
+
+// The parameters each image depends on, in the order rtl/spec_rom9.v and rtl/spec_rom12.v read them back
+// ($sscanf at time 0: a simulation whose parameters differ stops with a message naming the file and the field).
+std::string rom9_header(const Format& f) {
+    return "// specrom ROM 9: n_w=" + std::to_string(f.n_w) + " scale_w=" + std::to_string(f.scale_w) +
+           " scale_frac=" + std::to_string(f.scale_frac) + " decoder_rom=" + std::to_string(f.decoder_rom() ? 1 : 0) +
+           " tsel_w=" + std::to_string(f.decoder_rom() ? f.tsel_w() : 2) + " words=" + std::to_string(1 << f.n_w) +
+           " width=" + std::to_string(f.rom9_dw()) + " mode=" + mode_name(f.mode) + " tables=" + tables_text(f);
+}
+
+std::string rom12_header(const Format& f) {
+    return "// specrom ROM 12: tbl_aw=" + std::to_string(f.tbl_aw) + " tsel_w=" + std::to_string(f.tsel_w()) +
+           " tbl_frac=" + std::to_string(f.tbl_frac) + " interp=" + std::to_string(f.interp ? 1 : 0) +
+           " delta_w=" + std::to_string(f.interp ? f.delta_w : 0) + " words=" + std::to_string(1 << f.rom12_aw()) +
+           " width=" + std::to_string(f.rom12_dw()) + " tables=" + tables_text(f);
+}
+
+namespace {
 struct Param {
-    const char* name;
-    int value;
-    const char* doc;
+    std::string name;
+    long long value;
+    std::string doc;
 };
 
+// Everything that describes a configuration: the cores' parameters, spec_stream's descriptor layout and the
+// latencies. Both headers list the same entries (SPEC_<name> in Verilog, spec_params::<name> in C++).
 std::vector<Param> params(const Format& f) {
+    const Format::DescLayout d = f.desc();
     return {
         {"C_W", f.c_w, "register 1: C, UQ0.C_W"},
         {"ANG_W", f.ang_w, "registers 2, 3, 8: angle, two's complement radians"},
@@ -137,32 +166,65 @@ std::vector<Param> params(const Format& f) {
         {"N_W", f.n_w, "register 4: exponent n"},
         {"L_W", f.l_w, "counter 5: intervals l"},
         {"OUT_W", f.out_w, "output 27: intensity, UQ0.OUT_W"},
-        {"SCALE_W", f.scale_w, "ROM 9 word: sqrt(n/k)*2/pi, unsigned"},
+        {"SCALE_W", f.scale_w, "ROM 9 word: the scale of multiplier 11 times 2/pi, unsigned"},
         {"SCALE_FRAC", f.scale_frac, "fraction bits of the ROM 9 word"},
         {"TBL_AW", f.tbl_aw, "ROM 12: positions per table = 2^TBL_AW over [0, pi/2)"},
         {"TBL_FRAC", f.tbl_frac, "ROM 12 word: UQ1.TBL_FRAC, TBL_FRAC+1 bits"},
         {"INTERP", f.interp ? 1 : 0, "1: ROM 12 words carry the step to the next position, interpolated"},
         {"INTERP_FRAC", f.interp_frac, "fraction bits of the position used by the interpolation"},
         {"DELTA_W", f.delta_w, "width of the step field (with INTERP = 1)"},
+        {"DECODER_ROM", f.decoder_rom() ? 1 : 0,
+         f.decoder_rom() ? std::string(mode_name(f.mode)) + " mode / table set " + tables_text(f) +
+                               ": ROM 9's top TSEL_W bits are the table (decoder 10 as a ROM)"
+                         : "0: decoder 10's gates (Fig. 10) choose the table"},
+        {"TSEL_W", f.decoder_rom() ? f.tsel_w() : 2, "ROM 12 table index width"},
+        {"DESC_W", d.width, "spec_stream: descriptor width (s_axis_tdata)"},
+        {"DESC_C_LSB", d.c_lsb, "spec_stream descriptor: C at [DESC_C_LSB +: C_W]"},
+        {"DESC_N_LSB", d.n_lsb, "spec_stream descriptor: n at [DESC_N_LSB +: N_W]"},
+        {"DESC_L_LSB", d.l_lsb, "spec_stream descriptor: l at [DESC_L_LSB +: L_W]"},
+        {"DESC_ZETA0_LSB", d.zeta0_lsb, "spec_stream descriptor: zeta0 at [DESC_ZETA0_LSB +: ANG_W]"},
+        {"DESC_DZETA_LSB", d.dzeta_lsb, "spec_stream descriptor: dzeta at [DESC_DZETA_LSB +: ANG_W]"},
+        {"DATAPATH_LATENCY", f.datapath_latency(), "spec_datapath: register 8 to output 27, clocks"},
+        {"UNIT_FIRST_PIXEL", f.unit_first_pixel(), "spec_unit: pixel i valid in cycle t + this + 2i after Start in t"},
+        {"STREAM_LATENCY", f.stream_latency(), "spec_stream: descriptor accepted in a -> first pixel in a + this"},
+        {"STREAM_ACC", f.stream_acc(), "spec_stream: stages of the pipelined accumulator (register 8)"},
     };
+}
+
+// A name for the configuration that the Verilog header defines as a macro, so that including two headers of
+// different configurations in one compilation is an error instead of the first one silently winning.
+std::string config_tag(const std::string& body) {
+    uint32_t h = 2166136261u;  // FNV-1a of the parameter lines
+    for (unsigned char ch : body) h = (h ^ ch) * 16777619u;
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%08x", h);
+    return buf;
 }
 }  // namespace
 
-std::string verilog_header(const Format& f) {
+std::string verilog_header(const Format& f, const std::string& rom_dir) {
+    std::ostringstream body;
+    for (const auto& p : params(f)) {
+        body << "`define SPEC_" << p.name << " " << p.value << "  // " << p.doc << "\n";
+    }
+    const std::string tag = config_tag(body.str());
     std::ostringstream o;
     o << "// spec_params.vh - generated by specrom from rom/gen/spec_format.h; do not edit.\n"
-      << "// Default parameters of spec_unit; the ROM images beside this file are made for them.\n"
-      << "`ifndef SPEC_PARAMS_VH\n`define SPEC_PARAMS_VH\n";
-    for (const auto& p : params(f)) {
-        o << "`define SPEC_" << p.name << " " << p.value << "  // " << p.doc << "\n";
-    }
-    if (f.decoder_rom()) {  // only outside the patent's default, whose committed header stays as it was
-        o << "`define SPEC_DECODER_ROM 1  // " << mode_name(f.mode) << " mode: ROM 9's top TSEL_W bits are the table\n"
-          << "`define SPEC_TSEL_W " << f.tsel_w() << "  // ROM 12 table index width (" << f.tables.size()
-          << " tables)\n";
-    }
-    o << "`define SPEC_ROM9_FILE \"rom/rom9_scale.hex\"\n"
-      << "`define SPEC_ROM12_FILE \"rom/rom12_cosk.hex\"\n"
+      << "// Default parameters of spec_unit and spec_stream, the descriptor layout and the latencies of this\n"
+      << "// configuration; the ROM images beside this file are made for them (the cores check at time 0).\n"
+      << "`ifdef SPEC_PARAMS_VH\n"
+      << "`ifndef SPEC_PARAMS_" << tag << "\n"
+      << "// Two spec_params.vh of different configurations in one compilation: the first one's macros would win\n"
+      << "// silently. Put one configuration's directory on the include path; pass other configurations' values\n"
+      << "// as parameters of the instances (docs/interface.md, \"Configurations\").\n"
+      << "`include \"ERROR_two_spec_params_vh_of_different_configurations_in_one_compilation\"\n"
+      << "`endif\n"
+      << "`else\n"
+      << "`define SPEC_PARAMS_VH\n"
+      << "`define SPEC_PARAMS_" << tag << "\n"
+      << body.str()
+      << "`define SPEC_ROM9_FILE \"" << rom_dir << "rom9_scale.hex\"\n"
+      << "`define SPEC_ROM12_FILE \"" << rom_dir << "rom12_cosk.hex\"\n"
       << "`endif\n";
     return o.str();
 }
@@ -170,21 +232,15 @@ std::string verilog_header(const Format& f) {
 std::string cpp_header(const Format& f) {
     std::ostringstream o;
     o << "// spec_params.h - generated by specrom from rom/gen/spec_format.h; do not edit.\n"
-      << "// The widths and scales the committed ROM images in rom/ were made for.\n"
+      << "// The widths and scales the ROM images beside this file were made for, the descriptor layout and latencies.\n"
       << "#pragma once\n\nnamespace spec_params {\n";
     for (const auto& p : params(f)) {
         o << "constexpr int " << p.name << " = " << p.value << ";  // " << p.doc << "\n";
     }
-    if (f.decoder_rom()) {
-        o << "constexpr int DECODER_ROM = 1;  // " << mode_name(f.mode) << " mode: ROM 9's top TSEL_W bits are the table\n"
-          << "constexpr int TSEL_W = " << f.tsel_w() << ";\n";
-    }
     o << "constexpr int TBL_DW = " << f.tbl_dw() << ";\n"
       << "constexpr int ROM9_DEPTH = " << (1 << f.n_w) << ";\n"
       << "constexpr int ROM12_DEPTH = " << (1 << f.rom12_aw()) << ";\n"
-      << "constexpr int TABLE_K[" << f.tables.size() << "] = {";
-    for (size_t i = 0; i < f.tables.size(); ++i) o << (i ? ", " : "") << f.tables[i];
-    o << "};\n"
+      << "constexpr int TABLE_K[" << f.tables.size() << "] = {" << tables_text(f) << "};\n"
       << "}  // namespace spec_params\n";
     return o.str();
 }
@@ -209,13 +265,14 @@ void write_file(const std::string& path, const std::string& text) {
 }
 }  // namespace
 
-void write_all(const Format& f, const std::string& dir) {
+void write_all(const Format& f, const std::string& dir, const std::string& rom_dir) {
     f.validate();
     // Build everything first: a range error leaves no file written.
     const auto r9w = make_rom9(f);
-    const std::string r9 = hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.rom9_dw(), "ROM 9");
-    const std::string r12 = hex_image(make_rom12(f), f.rom12_dw(), "ROM 12");
-    const std::string vh = verilog_header(f);
+    const std::string r9 =
+        hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.rom9_dw(), "ROM 9", rom9_header(f));
+    const std::string r12 = hex_image(make_rom12(f), f.rom12_dw(), "ROM 12", rom12_header(f));
+    const std::string vh = verilog_header(f, rom_dir);
     const std::string h = cpp_header(f);
     write_file(dir + "/rom9_scale.hex", r9);
     write_file(dir + "/rom12_cosk.hex", r12);

@@ -78,6 +78,35 @@ struct Format {
     int prod_frac() const { return ang_frac + scale_frac; }  // fraction bits of multiplier 11's product
     int mul13_shift() const { return c_w + tbl_frac - out_w; }
 
+    // spec_stream's span descriptor (rtl/spec_stream.v): C, n and l each start at the next multiple of 16 bits,
+    // the two angles at the next multiple of 32, and the descriptor is a whole number of 32-bit words. For the
+    // default widths: C [15:0], n [25:16], l [47:32], zeta0 [95:64], dzeta [127:96], 128 bits.
+    struct DescLayout {
+        int c_lsb, n_lsb, l_lsb, zeta0_lsb, dzeta_lsb, width;
+    };
+    DescLayout desc() const {
+        auto up = [](int v, int m) { return (v + m - 1) / m * m; };
+        DescLayout d;
+        d.c_lsb = 0;
+        d.n_lsb = up(d.c_lsb + c_w, 16);
+        d.l_lsb = up(d.n_lsb + n_w, 16);
+        d.zeta0_lsb = up(d.l_lsb + l_w, 32);
+        d.dzeta_lsb = up(d.zeta0_lsb + ang_w, 32);
+        d.width = up(d.dzeta_lsb + ang_w, 32);
+        return d;
+    }
+
+    // Latencies in clock cycles, as the RTL's pipeline has them (a ctest measures them on the Verilated cores):
+    //   datapath_latency: spec_datapath, register 8 to output 27 (multiplier 11: 7 stages, ROM 12 and the register
+    //                     after it: 2, the interpolator: 2 when interp, multiplier 13: 3);
+    //   unit_first_pixel: spec_unit, Start in cycle t -> pixel i's valid_o in cycle t + unit_first_pixel + 2i;
+    //   stream_acc:       spec_stream's pipelined accumulator (register 8), 16-bit segments of ang_w + l_w bits;
+    //   stream_latency:   spec_stream, descriptor accepted in cycle a (core idle) -> first pixel in a + this.
+    int datapath_latency() const { return 7 + 2 + (interp ? 2 : 0) + 3; }
+    int unit_first_pixel() const { return datapath_latency() + 3; }
+    int stream_acc() const { return (ang_w + l_w + 15) / 16 + 2; }
+    int stream_latency() const { return 3 + stream_acc() + datapath_latency(); }
+
     // Throws std::invalid_argument with a one-line reason when the combination is not supported.
     void validate() const;
 };

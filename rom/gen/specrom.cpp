@@ -3,13 +3,18 @@
 //   specrom [--out DIR] [--config default|up5k] [--mode patent|tuned] [--tables K,K,...]
 //           [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
 //           [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]
-//           [--interp [--interp-frac N] [--delta-w N]]
+//           [--interp [--interp-frac N] [--delta-w N]] [--rom-path PREFIX]
+//
+// spec_params.vh names the images as PREFIX + file name (SPEC_ROM9_FILE, SPEC_ROM12_FILE); PREFIX defaults to the
+// absolute path of DIR, so a simulation that includes DIR's header finds the images from any working directory.
+// The committed rom/spec_params.vh is made with --rom-path rom/ (relative to the repository root).
 //
 // --mode tuned: ROM 9 holds the minimax scale per n and the table index (decoder 10 as a ROM; docs/tuned.md).
 // --tables: the powers k of ROM 12's tables (default 1,2,4,16); any other set also puts the table into ROM 9.
 //
 // With no options it writes the default images (the ones committed in rom/) into the current directory.
 // Bad input: a one-line message on stderr and exit code 2; nothing is written.
+#include <filesystem>
 #include <iostream>
 
 #include "cli.h"
@@ -20,6 +25,8 @@ int main(int argc, char** argv) {
     try {
         Format f;
         std::string out = ".";
+        std::string rom_path;
+        bool have_rom_path = false;
         Args a(argc, argv, 1);
         while (!a.done()) {
             std::string fl = a.flag();
@@ -27,11 +34,14 @@ int main(int argc, char** argv) {
                 std::cout << "usage: specrom [--out DIR] [--config default|up5k] [--mode patent|tuned] [--tables K,K,...]\n"
                              "               [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
                              "               [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]\n"
-                             "               [--interp [--interp-frac N] [--delta-w N]]\n"
-                             "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n";
+                             "               [--interp [--interp-frac N] [--delta-w N]] [--rom-path PREFIX]\n"
+                             "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n"
+                             "spec_params.vh names the images PREFIX + file name; PREFIX defaults to DIR's absolute\n"
+                             "path with a trailing '/', so the header works from any working directory.\n";
                 return 0;
             }
             if (fl == "--out") { out = a.value(fl); continue; }
+            if (fl == "--rom-path") { rom_path = a.value(fl); have_rom_path = true; continue; }
             if (fl == "--interp") { f.interp = true; continue; }
             if (fl == "--config") {
                 const Mode mode = f.mode;
@@ -60,7 +70,18 @@ int main(int argc, char** argv) {
             if (fl == "--c-w") f.out_w = f.c_w;
         }
         f.validate();
-        write_all(f, out);
+        if (!have_rom_path) {
+            std::error_code ec;
+            const std::filesystem::path dir = std::filesystem::canonical(out, ec);
+            // (a directory that does not exist fails in write_all, after the range checks)
+            rom_path = (ec ? out : dir.string()) + "/";
+        }
+        for (char ch : rom_path) {
+            if (ch == '"' || ch == '\\' || static_cast<unsigned char>(ch) < 0x20) {
+                throw UsageError("the ROM path '" + rom_path + "' cannot be written in a Verilog string; pass --rom-path");
+            }
+        }
+        write_all(f, out, rom_path);
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "specrom: " << spec::printable(e.what()) << "\n";

@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "highlight_tests.h"
+#include "nh_bound.h"
 #include "span_host.h"
 
 namespace spec {
@@ -19,41 +21,14 @@ double angle(const Vec& a, const Vec& b) { return std::atan2(glm::length(glm::cr
 
 double det3(const Vec& a, const Vec& b, const Vec& c) { return glm::dot(a, glm::cross(b, c)); }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+nhb::Vec3<double> v3(const Vec& v) { return nhb::Vec3<double>{v.x, v.y, v.z}; }
 }  // namespace
 
 PaperTestResult paper_test(const Vec& na, const Vec& nb, const Vec& nc, const Vec& h, ProjPlane plane) {
+    const PaperVerdict<double> v = paper_test_t(v3(na), v3(nb), v3(nc), v3(h), plane == ProjPlane::dominant);
     PaperTestResult r;
-    int drop = 2;
-    if (plane == ProjPlane::dominant) {
-        const double ax = std::fabs(h.x), ay = std::fabs(h.y), az = std::fabs(h.z);
-        drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-    }
-    const int i1 = (drop + 1) % 3, i2 = (drop + 2) % 3;
-    auto proj = [&](const Vec& v) { return glm::dvec2(v[i1], v[i2]); };
-    // Arc midpoint, eq. (3): (Na + Nb) / (2 cos(psi/2)), 2 cos(psi/2) = |Na + Nb| for unit vectors.
-    auto mid = [&](const Vec& a, const Vec& b) {
-        const Vec s = a + b;
-        const double len = glm::length(s);
-        return len > 1e-300 ? proj(s / len) : proj(a);
-    };
-    const Vec* n[3] = {&na, &nb, &nc};
-    const glm::dvec2 hp = proj(h);
-    r.inside = true;
-    for (int k = 0; k < 3; ++k) {
-        // the line through the projected midpoint of the arc opposite vertex k, parallel to its chord
-        const Vec& b = *n[(k + 1) % 3];
-        const Vec& c = *n[(k + 2) % 3];
-        const glm::dvec2 dir = proj(c) - proj(b);
-        const glm::dvec2 m = mid(b, c);
-        const double sv = cross2(dir, proj(*n[k]) - m);   // side of the opposite vertex
-        const double sh = cross2(dir, hp - m);             // side of H'
-        if (std::fabs(sv) < 1e-15 || glm::length(dir) < 1e-15) {
-            r.degenerate = true;  // the projection has no area here: no decision, say inside
-            continue;
-        }
-        if ((sv > 0 && sh < 0) || (sv < 0 && sh > 0)) r.inside = false;
-    }
+    r.inside = v.inside;
+    r.degenerate = v.degenerate;
     return r;
 }
 
@@ -65,57 +40,19 @@ double diameter(const Vec& a, const Vec& b, const Vec& c) {
 }
 
 Cone bounding_cone(const Vec& a, const Vec& b, const Vec& c) {
-    const Vec p[3] = {a, b, c};
-    // candidates: the cones on each edge as a diameter, the circumscribed cone, the centroid's cone. For each
-    // axis the farthest of the three points (smallest dot product) sets the radius, so every candidate
-    // contains the three points; the smallest is kept, its radius then measured by atan2.
-    Vec best_axis(0, 0, 1);
-    const Vec* best_far = nullptr;
-    double best_dot = -2;
-    auto consider = [&](const Vec& axis_in) {
-        const double len = glm::length(axis_in);
-        if (!(len > 1e-300)) return;
-        const Vec axis = axis_in / len;
-        int far = 0;
-        double d = glm::dot(axis, p[0]);
-        for (int k = 1; k < 3; ++k) {
-            const double e = glm::dot(axis, p[k]);
-            if (e < d) d = e, far = k;
-        }
-        if (d > best_dot) {
-            best_dot = d;
-            best_axis = axis;
-            best_far = &p[far];
-        }
-    };
-    for (int k = 0; k < 3; ++k) consider(p[k] + p[(k + 1) % 3]);
-    Vec nrm = glm::cross(b - a, c - a);
-    if (glm::dot(nrm, a + b + c) < 0) nrm = -nrm;
-    consider(nrm);
-    consider(a + b + c);
-    Cone best;
-    if (!best_far) {
-        best.radius = kPi;
-        return best;
-    }
-    best.axis = best_axis;
-    // the farthest point's angle by atan2; the margin covers the rounding of the dot products that chose it
-    best.radius = angle(best_axis, *best_far) + 1e-8;
-    best.valid = best.radius < kPi / 2 - 1e-9;
-    return best;
+    const nhb::Cone<double> k = nhb::cone_of_triangle(v3(a), v3(b), v3(c));
+    Cone r;
+    r.axis = Vec(k.axis.x, k.axis.y, k.axis.z);
+    r.valid = k.valid;
+    r.radius = k.valid ? std::atan2(k.sin_r, k.cos_r) : kPi;
+    return r;
 }
 
 bool spherical_inside(const Vec& na, const Vec& nb, const Vec& nc, const Vec& h) {
     // fast path: the centroid direction within 90 degrees of every normal (so they lie in an open
     // hemisphere), a proper triangle, H in that hemisphere: three triple products decide
-    const Vec g = na + nb + nc;
-    const double s0 = det3(na, nb, nc);
-    if (glm::dot(g, na) > 0 && glm::dot(g, nb) > 0 && glm::dot(g, nc) > 0 && std::fabs(s0) >= 1e-14) {
-        if (glm::dot(h, g) <= 0) return false;
-        const double d1 = det3(na, nb, h), d2 = det3(nb, nc, h), d3 = det3(nc, na, h);
-        if (s0 > 0) return d1 >= 0 && d2 >= 0 && d3 >= 0;
-        return d1 <= 0 && d2 <= 0 && d3 <= 0;
-    }
+    const int fast = spherical_sign_t(v3(na), v3(nb), v3(nc), v3(h));
+    if (fast >= 0) return fast == 1;
     const Cone cone = bounding_cone(na, nb, nc);
     if (!cone.valid) return true;
     if (glm::dot(h, cone.axis) <= 0) return false;  // the other hemisphere (where -h would pass the signs)
@@ -130,14 +67,14 @@ bool spherical_inside(const Vec& na, const Vec& nb, const Vec& nc, const Vec& h)
     return d1 <= 0 && d2 <= 0 && d3 <= 0;
 }
 
-TriangleBound triangle_bound(const Vec n[3], const Vec h[3]) {
+TriangleBound triangle_bound(const Vec n[3], const Vec h[3], bool tight) {
     TriangleBound t;
-    const Cone cn = bounding_cone(n[0], n[1], n[2]);
-    const Cone ch = bounding_cone(h[0], h[1], h[2]);
+    const nhb::Vec3<double> vn[3] = {v3(n[0]), v3(n[1]), v3(n[2])}, vh[3] = {v3(h[0]), v3(h[1]), v3(h[2])};
+    const nhb::Cone<double> cn = tight ? nhb::cone_of_triangle(vn[0], vn[1], vn[2]) : nhb::cone_of_cluster(vn, 3);
+    const nhb::Cone<double> ch = tight ? nhb::cone_of_triangle(vh[0], vh[1], vh[2]) : nhb::cone_of_cluster(vh, 3);
     if (!cn.valid || !ch.valid) return t;
     t.valid = true;
-    const double gap = angle(cn.axis, ch.axis) - cn.radius - ch.radius;
-    t.nh_max = gap > 0 ? std::cos(gap) : 1.0;
+    t.nh_max = nhb::nh_max(cn, ch, 1e-12);
     // a span's end normals (halfway vectors) lie in the spherical triangle, so their angle is at most the
     // triangle's diameter; the host's sinusoid and the true N.H agree at both ends and have second
     // derivatives of at most (psi + phi)^2, so they differ by at most (psi + phi)^2 / 4 (docs/methods.md)
@@ -203,7 +140,7 @@ void triangle_vectors(const render::Scene& sc, const render::Frame& f, uint32_t 
     }
 }
 
-CullResult cull_spans(const render::Scene& sc, const render::Frame& f, const Model& m) {
+CullResult cull_spans(const render::Scene& sc, const render::Frame& f, const Model& m, bool tight) {
     CullResult r;
     r.keep.assign(f.spans.size(), 1);
     std::vector<double> threshold(sc.objects.size());
@@ -218,7 +155,7 @@ CullResult cull_spans(const render::Scene& sc, const render::Frame& f, const Mod
         if (d < 0) {
             Vec n[3], h[3];
             triangle_vectors(sc, f, sp.tri, n, h);
-            const TriangleBound b = triangle_bound(n, h);
+            const TriangleBound b = triangle_bound(n, h, tight);
             ++r.triangles;
             if (!b.valid) ++r.unbounded;
             d = b.b_host < threshold[sp.obj] ? 1 : 0;

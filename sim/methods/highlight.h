@@ -60,7 +60,9 @@ struct TriangleBound {
     double slack = 0;     // (psi + phi)^2 / 4 for the largest span angles psi, phi the triangle allows
     double b_host = 1;    // >= the host's sinusoid A cos(zeta) anywhere on any span: nh_max + slack
 };
-TriangleBound triangle_bound(const Vec n[3], const Vec h[3]);
+// tight: each cone the tightest of five (nhb::cone_of_triangle); false: around the centroid direction
+// (nhb::cone_of_cluster, cheaper and looser).
+TriangleBound triangle_bound(const Vec n[3], const Vec h[3], bool tight = true);
 
 // The largest output code of the core (bit-exact model = RTL) for any span whose host sinusoid never exceeds
 // b_host, with Is*ks = strength and exponent n. Uses the core's monotonicity (output non-increasing in
@@ -85,7 +87,7 @@ struct CullResult {
     uint64_t unbounded = 0;           // triangles whose normals or H span a hemisphere or more (never culled)
 };
 // The --cull-specular decision for every span of the frame (spans of a triangle share it).
-CullResult cull_spans(const render::Scene& sc, const render::Frame& f, const Model& m);
+CullResult cull_spans(const render::Scene& sc, const render::Frame& f, const Model& m, bool tight = true);
 // The frame with only the kept spans (the specular pass runs on it; diffuse uses the whole frame).
 render::Frame kept_frame(const render::Frame& f, const CullResult& c);
 

@@ -11,16 +11,46 @@
 #include <vector>
 
 #include "spec_model.h"
+#include "spec_params.h"
 #include "verilated.h"
 
 namespace spec {
 
-// The descriptor layout of spec_stream (rtl/spec_stream.v), 128 bits as four 32-bit words.
-inline void pack_descriptor(const SpanRegs& r, uint32_t w[4]) {
-    w[0] = (r.c & 0xffffu) | ((r.n & 0x3ffu) << 16);
-    w[1] = r.len & 0xffffu;
-    w[2] = static_cast<uint32_t>(r.zeta0);
-    w[3] = static_cast<uint32_t>(r.dzeta);
+// The descriptor layout of spec_stream (rtl/spec_stream.v) as the generator writes it (rom/spec_params.h),
+// DESC_W bits as 32-bit words (the Verilated s_axis_tdata).
+constexpr int kDescWords = spec_params::DESC_W / 32;
+static_assert(spec_params::DESC_W % 32 == 0, "the descriptor is a whole number of 32-bit words");
+
+// Puts the low `width` bits of v into w at bit lsb.
+inline void put_field(uint32_t* w, int lsb, int width, uint64_t v) {
+    for (int b = 0; b < width; ++b) {
+        const int bit = lsb + b;
+        const uint32_t m = 1u << (bit % 32);
+        if ((v >> b) & 1u) w[bit / 32] |= m;
+        else w[bit / 32] &= ~m;
+    }
+}
+
+inline void pack_descriptor(const SpanRegs& r, uint32_t w[kDescWords]) {
+    for (int i = 0; i < kDescWords; ++i) w[i] = 0;
+    using namespace spec_params;
+    put_field(w, DESC_C_LSB, C_W, r.c);
+    put_field(w, DESC_N_LSB, N_W, r.n);
+    put_field(w, DESC_L_LSB, L_W, r.len);
+    put_field(w, DESC_ZETA0_LSB, ANG_W, static_cast<uint64_t>(r.zeta0));
+    put_field(w, DESC_DZETA_LSB, ANG_W, static_cast<uint64_t>(r.dzeta));
+}
+
+// The descriptor's bits outside its fields (which the core ignores), as a mask per word.
+inline void ignored_mask(uint32_t w[kDescWords]) {
+    SpanRegs ones;
+    ones.c = ~0u;
+    ones.n = ~0u;
+    ones.len = ~0u;
+    ones.zeta0 = -1;
+    ones.dzeta = -1;
+    pack_descriptor(ones, w);
+    for (int i = 0; i < kDescWords; ++i) w[i] = ~w[i];
 }
 
 struct StreamPixel {
@@ -87,13 +117,14 @@ public:
             if (!offering && next < spans.size() && offer(rng)) offering = true;
             top_->s_axis_tvalid = offering;
             if (offering) {
-                uint32_t w[4];
+                uint32_t w[kDescWords];
                 pack_descriptor(spans[next], w);
                 if (ignored_ones_) {  // the bits between the fields, which the core must ignore
-                    w[0] |= 0xfc000000u;
-                    w[1] |= 0xffff0000u;
+                    uint32_t m[kDescWords];
+                    ignored_mask(m);
+                    for (int i = 0; i < kDescWords; ++i) w[i] |= m[i];
                 }
-                for (int i = 0; i < 4; ++i) top_->s_axis_tdata[i] = w[i];
+                for (int i = 0; i < kDescWords; ++i) top_->s_axis_tdata[i] = w[i];
             }
             top_->m_axis_tready = ready(rng);
             top_->eval();
@@ -119,7 +150,7 @@ private:
         top_->rst_n = 1;
         top_->s_axis_tvalid = 0;
         top_->m_axis_tready = 1;
-        for (int i = 0; i < 4; ++i) top_->s_axis_tdata[i] = 0;
+        for (int i = 0; i < kDescWords; ++i) top_->s_axis_tdata[i] = 0;
     }
     std::unique_ptr<VerilatedContext> ctx_;  // heap-allocated, destroyed after the model
     std::unique_ptr<V> top_;

@@ -236,9 +236,9 @@ int cmd_stream_diagram(int argc, char** argv) {
     for (int c = 0; c < ncyc; ++c) {
         t.s_axis_tvalid = next < spans.size();
         if (next < spans.size()) {
-            uint32_t w[4];
+            uint32_t w[kDescWords];
             pack_descriptor(spans[next], w);
-            for (int i = 0; i < 4; ++i) t.s_axis_tdata[i] = w[i];
+            for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
         }
         t.m_axis_tready = !(c == 24 || c == 25);  // the sink stalls for two cycles
         t.eval();

@@ -16,9 +16,9 @@ int cmd_stream_diagram(int argc, char** argv);  // specsim stream-diagram: AXI t
 int cmd_compare(int argc, char** argv);  // specsim compare: patent vs tuned vs prototype per BRDF range (cmd_tuned.cpp)
 int cmd_tables(int argc, char** argv);   // specsim tables: table sets and sizes against ROM bits (cmd_tuned.cpp)
 
-int cmd_highlight(int argc, char** argv);  // specsim highlight: companion paper A measured (cmd_methods.cpp)
-int cmd_normalize(int argc, char** argv);  // specsim normalize: companion paper B measured (cmd_methods.cpp)
-int cmd_parallax(int argc, char** argv);   // specsim parallax: companion paper C measured (cmd_methods.cpp)
+int cmd_highlight(int argc, char** argv);  // specsim highlight: companion paper A measured (cmd_highlight.cpp)
+int cmd_normalize(int argc, char** argv);  // specsim normalize: companion paper B measured (cmd_normalize.cpp)
+int cmd_parallax(int argc, char** argv);   // specsim parallax: companion paper C measured (cmd_parallax.cpp)
 
 // The usage lines of these commands, for specsim --help.
 extern const char* const kRenderUsage;

@@ -6,7 +6,7 @@
 //   specsim demo [--vcd FILE] [--diagram FILE]
 //   specsim vectors --out FILE [--spans N] [--seed S]
 //   specsim render | render-bench | plots | export-obj   (cmd_render.cpp: host side and renderer)
-//   specsim highlight | normalize | parallax             (cmd_methods.cpp: the companion papers)
+//   specsim highlight | normalize | parallax             (cmd_highlight.cpp, ...: the companion papers)
 //
 // Bad input: a one-line message on stderr and exit code 2.
 #include <cmath>

@@ -3,25 +3,57 @@
 // tb_spec_unit), sends every span as a descriptor with random gaps on s_axis_tvalid, takes the pixels with
 // random m_axis_tready, and compares each pixel and tlast in order; any mismatch, a lost or extra pixel or a
 // hang ends with $fatal (exit 1). +stall=P sets the stall probability in percent (default 30).
+// Widths and the descriptor layout come from the configuration's spec_params.vh (the include path picks it);
+// ROM9_FILE/ROM12_FILE can be set with iverilog -P. 4-state: rst_n is low for exactly one clock at the start,
+// and from then on every output must be 0 or 1 in every cycle.
 `timescale 1ns / 1ps
 `default_nettype none
-module tb_spec_stream;
+`include "spec_params.vh"
+module tb_spec_stream #(
+    parameter ROM9_FILE = `SPEC_ROM9_FILE,
+    parameter ROM12_FILE = `SPEC_ROM12_FILE
+);
     localparam VMAX = 65536;
+    localparam C_W = `SPEC_C_W, ANG_W = `SPEC_ANG_W, N_W = `SPEC_N_W, L_W = `SPEC_L_W, OUT_W = `SPEC_OUT_W;
+    localparam DESC_W = `SPEC_DESC_W;
     reg clk = 1'b0;
     always #5 clk = ~clk;
 
     reg rst_n = 1'b0;
     reg s_valid = 1'b0;
-    reg [127:0] s_data = 128'd0;
+    reg [DESC_W-1:0] s_data = {DESC_W{1'b0}};
     wire s_ready;
     wire m_valid, m_last;
-    wire [15:0] m_data;
+    wire [OUT_W-1:0] m_data;
     reg m_ready = 1'b0;
 
-    spec_stream dut (
+    spec_stream #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)) dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
         .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tlast(m_last)
     );
+
+    // after the one rst_n pulse, no output is ever X or Z
+    reg reset_done = 1'b0;
+    always @(negedge clk) begin
+        if (reset_done && ^{s_ready, m_valid, m_data, m_last} === 1'bx) begin
+            $display("tb_spec_stream: an output is X or Z after reset at %0t: tready %b tvalid %b tdata %b tlast %b",
+                     $time, s_ready, m_valid, m_data, m_last);
+            $fatal(1);
+        end
+    end
+
+    // the descriptor of span s (its registers in the vector file from word p), laid out as spec_params.vh says
+    function [DESC_W-1:0] descriptor;
+        input integer p;
+        begin
+            descriptor = {DESC_W{1'b0}};
+            descriptor[`SPEC_DESC_C_LSB +: C_W] = vec[p][C_W-1:0];
+            descriptor[`SPEC_DESC_N_LSB +: N_W] = vec[p + 3][N_W-1:0];
+            descriptor[`SPEC_DESC_L_LSB +: L_W] = vec[p + 4][L_W-1:0];
+            descriptor[`SPEC_DESC_ZETA0_LSB +: ANG_W] = vec[p + 2][ANG_W-1:0];
+            descriptor[`SPEC_DESC_DZETA_LSB +: ANG_W] = vec[p + 1][ANG_W-1:0];
+        end
+    endfunction
 
     reg [31:0] vec[0:VMAX-1];
     reg [31:0] expect_px[0:VMAX-1];
@@ -62,13 +94,14 @@ module tb_spec_stream;
     // source: descriptors in order, valid held until accepted
     initial begin
         sent = 0;
-        repeat (3) @(posedge clk);
+        @(posedge clk);          // the one reset edge
         rst_n <= 1'b1;
+        reset_done <= 1'b1;
         @(posedge clk);
         while (sent < nspans) begin
             if (!s_valid && (($random(seed) & 32'h7fffffff) % 100) >= stall) begin
                 p = span_at[sent];
-                s_data <= {vec[p + 1], vec[p + 2], 16'd0, vec[p + 4][15:0], 6'd0, vec[p + 3][9:0], vec[p][15:0]};
+                s_data <= descriptor(p);
                 s_valid <= 1'b1;
             end
             @(posedge clk);
@@ -89,9 +122,9 @@ module tb_spec_stream;
             @(posedge clk);
             cycles = cycles + 1;
             if (m_valid && m_ready) begin
-                if (m_data !== expect_px[got][15:0] || m_last !== expect_last[got]) begin
+                if (m_data !== expect_px[got][OUT_W-1:0] || m_last !== expect_last[got]) begin
                     $display("pixel %0d: got %h last %b, model %h last %b", got, m_data, m_last,
-                             expect_px[got][15:0], expect_last[got]);
+                             expect_px[got][OUT_W-1:0], expect_last[got]);
                     $fatal(1);
                 end
                 got = got + 1;

@@ -2,32 +2,51 @@
 // Reads +vectors=FILE (written by `specsim vectors` from the bit-exact C++ model): the span count, then per
 // span C, dzeta, zeta0, n, l and the l + 1 expected pixels. Each span is written through the ports, started,
 // and every valid_o pixel compared; a mismatch, a missing or extra pixel, or a hang ends with $fatal (exit 1).
+// Widths come from the configuration's spec_params.vh (the include path picks it); ROM9_FILE/ROM12_FILE can be
+// set with iverilog -P (tests/icarus.cmake runs the simulation outside the repository with absolute paths).
+// 4-state: init_n is low for exactly one clock at the start, and from then on every output must be 0 or 1
+// in every cycle (docs/interface.md: one init_n pulse is the reset the core needs).
 `timescale 1ns / 1ps
 `default_nettype none
-module tb_spec_unit;
+`include "spec_params.vh"
+module tb_spec_unit #(
+    parameter ROM9_FILE = `SPEC_ROM9_FILE,
+    parameter ROM12_FILE = `SPEC_ROM12_FILE
+);
     localparam VMAX = 65536;
+    localparam C_W = `SPEC_C_W, ANG_W = `SPEC_ANG_W, N_W = `SPEC_N_W, L_W = `SPEC_L_W, OUT_W = `SPEC_OUT_W;
     reg clk = 1'b0;
     always #5 clk = ~clk;
 
     reg init_n = 1'b0, start = 1'b0;
-    reg [15:0] c_i = 16'd0;
+    reg [C_W-1:0] c_i = {C_W{1'b0}};
     reg c_we = 1'b0;
-    reg [31:0] dzeta_i = 32'd0, zeta0_i = 32'd0;
+    reg [ANG_W-1:0] dzeta_i = {ANG_W{1'b0}}, zeta0_i = {ANG_W{1'b0}};
     reg dzeta_we = 1'b0, zeta0_we = 1'b0;
-    reg [9:0] n_i = 10'd0;
+    reg [N_W-1:0] n_i = {N_W{1'b0}};
     reg n_we = 1'b0;
-    reg [15:0] len_i = 16'd0;
+    reg [L_W-1:0] len_i = {L_W{1'b0}};
     reg len_load_n = 1'b1;
-    wire [15:0] intensity_o;
+    wire [OUT_W-1:0] intensity_o;
     wire busy_o, valid_o;
 
-    spec_unit dut (
+    spec_unit #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)) dut (
         .clk(clk), .init_n(init_n), .start(start),
         .c_i(c_i), .c_we(c_we), .dzeta_i(dzeta_i), .dzeta_we(dzeta_we),
         .zeta0_i(zeta0_i), .zeta0_we(zeta0_we), .n_i(n_i), .n_we(n_we),
         .len_i(len_i), .len_load_n(len_load_n),
         .intensity_o(intensity_o), .busy_o(busy_o), .valid_o(valid_o)
     );
+
+    // after the one init_n pulse, no output is ever X or Z
+    reg reset_done = 1'b0;
+    always @(negedge clk) begin
+        if (reset_done && ^{intensity_o, busy_o, valid_o} === 1'bx) begin
+            $display("tb_spec_unit: an output is X or Z after reset at %0t: intensity %b busy %b valid %b", $time,
+                     intensity_o, busy_o, valid_o);
+            $fatal(1);
+        end
+    end
 
     reg [31:0] vec[0:VMAX-1];
     reg [1023:0] path;
@@ -48,16 +67,17 @@ module tb_spec_unit;
         p = 1;
         errors = 0;
         pixels = 0;
-        repeat (2) @(posedge clk);
+        @(posedge clk);          // the one reset edge
         init_n <= 1'b1;
+        reset_done <= 1'b1;
         @(posedge clk);
         for (s = 0; s < nspans; s = s + 1) begin
             len = vec[p + 4];
-            c_i <= vec[p][15:0];        c_we <= 1'b1;
-            dzeta_i <= vec[p + 1];      dzeta_we <= 1'b1;
-            zeta0_i <= vec[p + 2];      zeta0_we <= 1'b1;
-            n_i <= vec[p + 3][9:0];     n_we <= 1'b1;
-            len_i <= vec[p + 4][15:0];  len_load_n <= 1'b0;
+            c_i <= vec[p][C_W-1:0];           c_we <= 1'b1;
+            dzeta_i <= vec[p + 1][ANG_W-1:0]; dzeta_we <= 1'b1;
+            zeta0_i <= vec[p + 2][ANG_W-1:0]; zeta0_we <= 1'b1;
+            n_i <= vec[p + 3][N_W-1:0];       n_we <= 1'b1;
+            len_i <= vec[p + 4][L_W-1:0];     len_load_n <= 1'b0;
             @(posedge clk);
             c_we <= 1'b0; dzeta_we <= 1'b0; zeta0_we <= 1'b0; n_we <= 1'b0; len_load_n <= 1'b1;
             start <= 1'b1;
@@ -72,9 +92,9 @@ module tb_spec_unit;
                         $display("span %0d: more than %0d pixels", s, len + 1);
                         $fatal(1);
                     end
-                    if (intensity_o !== vec[p + 5 + got][15:0]) begin
+                    if (intensity_o !== vec[p + 5 + got][OUT_W-1:0]) begin
                         $display("span %0d (n=%0d, len=%0d) pixel %0d: got %h, model %h", s, vec[p + 3], len,
-                                 got, intensity_o, vec[p + 5 + got][15:0]);
+                                 got, intensity_o, vec[p + 5 + got][OUT_W-1:0]);
                         errors = errors + 1;
                     end
                     got = got + 1;

@@ -1,0 +1,2 @@
+parallax_step.v
+parallax_iter.v

@@ -1,0 +1,17 @@
+spec_param_check.v
+spec_reg.v
+spec_counter.v
+spec_accum.v
+spec_rom.v
+spec_rom9.v
+spec_decoder.v
+spec_mul11.v
+spec_rom12.v
+spec_interp.v
+spec_mul13.v
+spec_delay.v
+spec_datapath.v
+spec_saccum.v
+spec_ctrl.v
+spec_unit.v
+spec_stream.v

@@ -1,0 +1,30 @@
+# ctest methods_rtl_lint: the companion modules of rtl/methods.f are Verilator -Wall clean with every module as
+# top (and parallax_iter with 1, 3 and 8 slots), and Icarus Verilog accepts them as Verilog-2005 without a
+# warning. Arguments: VERILATOR, IVERILOG, RTL_DIR, WORK.
+file(STRINGS ${RTL_DIR}/methods.f names)
+set(files "")
+foreach(n ${names})
+  list(APPEND files ${RTL_DIR}/${n})
+endforeach()
+file(MAKE_DIRECTORY ${WORK})
+function(lint top)
+  execute_process(COMMAND ${VERILATOR} --lint-only -Wall ${files} --top-module ${top} ${ARGN}
+                  WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "verilator --lint-only -Wall --top-module ${top} ${ARGN}:\n${out}")
+  endif()
+  message(STATUS "verilator -Wall ${top} ${ARGN}: clean")
+endfunction()
+foreach(n ${names})
+  string(REGEX REPLACE "\\.v$" "" top ${n})
+  lint(${top})
+endforeach()
+foreach(s 1 3 8)
+  lint(parallax_iter -GSLOTS=${s})
+endforeach()
+execute_process(COMMAND ${IVERILOG} -g2005 -Wall -o ${WORK}/methods.vvp ${files}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc EQUAL 0 OR out MATCHES "warning|error")
+  message(FATAL_ERROR "iverilog -g2005 -Wall: ${out}")
+endif()
+message(STATUS "iverilog -g2005 -Wall: accepted")
