@@ -248,7 +248,7 @@ BOARD ?=
 MODE ?= 640x480
 FRAMES ?= 2
 BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
-CORE_RTL := $(filter-out rtl/parallax_step.v,$(RTL))
+CORE_RTL := $(RTL_CORE)
 
 .PHONY: board-sim bitstream flash board-tables lint-boards check-board
 

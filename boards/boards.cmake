@@ -18,7 +18,7 @@ board_read_list(BOARD_ICEBREAKER boards/icebreaker/icebreaker.f)
 board_read_list(BOARD_ULX3S boards/ulx3s/ulx3s.f)
 file(GLOB BOARD_ICEBREAKER_SIM ${CMAKE_SOURCE_DIR}/boards/icebreaker/sim/*.v)
 file(GLOB BOARD_ULX3S_SIM ${CMAKE_SOURCE_DIR}/boards/ulx3s/sim/*.v)
-set(BOARD_CORE_RTL ${RTL_LEAVES} ${RTL_DIR}/spec_stream.v)
+set(BOARD_CORE_RTL ${RTL_CORE})
 set(BOARD_GEN ${CMAKE_SOURCE_DIR}/boards/common/gen)
 
 # The C++ model, the double-precision reference, capture, TMDS, boardsim's parse/compute/report

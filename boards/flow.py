@@ -41,12 +41,8 @@ def read_list(path):
 
 
 def core_rtl():
-    # the core's modules (spec_stream and its datapath; rtl/spec_core.f once it exists)
-    f = os.path.join(ROOT, "rtl", "spec_core.f")
-    if os.path.exists(f):
-        return read_list("rtl/spec_core.f")
-    return sorted(os.path.join("rtl", n) for n in os.listdir(os.path.join(ROOT, "rtl"))
-                  if n.startswith("spec_") and n.endswith(".v"))
+    # the core's modules: the one file list rtl/spec_core.f (names relative to rtl/)
+    return [os.path.join("rtl", n) for n in read_list("rtl/spec_core.f")]
 
 
 def run(cmd, log):

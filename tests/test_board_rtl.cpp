@@ -76,7 +76,7 @@ void check_scene(const BoardScene& s, double p_ready, uint64_t max_cycles_allowe
         spans += got.size();
     }
     EXPECT_GT(spans, size_t(1000));
-    RecordProperty("busiest_line_clocks", int(worst));
+    ::testing::Test::RecordProperty("busiest_line_clocks", int(worst));
     if (max_cycles_allowed) EXPECT_LE(worst, max_cycles_allowed) << "clocks for the busiest line";
 }
 
