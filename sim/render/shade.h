@@ -28,6 +28,8 @@ enum class SpecModel {
     ref,        // double precision, exact Blinn-Phong for the interpolated vectors (per pixel slerp of N, H)
     prototype,  // Abbas, Szirmay-Kalos, Horvath: C cos^2(sqrt(n/2) zeta), 0 past pi/2, in double
     host,       // the host's angles with exact cos^n in double: the host's own share of the error
+    shader,     // the Verilated spec_shader: the span's end vectors in, setup and core in the RTL (sim/setup,
+                // spec::shade_shader; shade_specular does not run it)
 };
 const char* model_name(SpecModel m);
 // Throws InputError for an unknown name.

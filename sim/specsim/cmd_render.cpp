@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "setup_render.h"
 #include "commands.h"
 #include "fileutil.h"
 #include "image.h"
@@ -33,7 +34,9 @@ const char* const kRenderUsage =
     "           --size N       image N x N pixels, 16..4096 (default 512)\n"
     "           --model M      rtl (Verilated spec_unit, default) | golden (bit-exact model) |\n"
     "                          ref (double, exact Blinn-Phong for the interpolated vectors) |\n"
-    "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n)\n"
+    "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n) |\n"
+    "                          shader (Verilated spec_shader: span ends in, setup and core in RTL; docs/setup.md)\n"
+    "           --shader-config C  pipelined (default) | small: the shader's configuration (--model shader)\n"
     "           --mode M       patent (default) | tuned: ROM 9 of the rtl and golden models (docs/tuned.md)\n"
     "           --out FILE     the rendered PNG (required)\n"
     "           --panel FILE   also render ref and prototype: PNG of ref | model | prototype | error maps\n"
@@ -83,6 +86,7 @@ struct RenderArgs {
     double amp = 16;
     int progress = -1;  // -1: when stderr is a terminal
     bool cull = false;  // --cull-specular
+    SetupConfig shader_config = SetupConfig::pipelined;   // --shader-config (--model shader, docs/setup.md)
     // overrides
     bool has_light_dir = false, has_light_color = false, has_intensity = false, has_ambient = false;
     dvec3 light_dir, light_color, ambient;
@@ -131,6 +135,13 @@ RenderArgs parse_render(int argc, char** argv) {
         } else if (f == "--progress") r.progress = 1;
         else if (f == "--quiet") r.progress = 0;
         else if (f == "--cull-specular") r.cull = true;
+        else if (f == "--shader-config") {
+            try {
+                r.shader_config = parse_setup_config(a.value(f));
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(std::string("--shader-config: ") + e.what());
+            }
+        }
         else if (f == "--light-dir") { r.light_dir = parse_vec3(f, a.value(f)); r.has_light_dir = true; }
         else if (f == "--light-color") { r.light_color = parse_vec3(f, a.value(f)); r.has_light_color = true; }
         else if (f == "--light-intensity") { r.intensity = parse_double(f, a.value(f)); r.has_intensity = true; }
@@ -266,8 +277,9 @@ int cmd_render(int argc, char** argv) {
         r.model = m;
         const render::Frame& spec_frame = ra.cull && m == ra.model ? culled : frame;
         ProgressBar pb(bar && m == ra.model, render::model_name(m));
-        r.run = render::shade_specular(sc, spec_frame, m, ra.rgb, ra.gamma, [&](size_t d, size_t t) { pb(d, t); },
-                                       ra.mode);
+        const render::Progress prog = [&](size_t d, size_t t) { pb(d, t); };
+        r.run = m == render::SpecModel::shader ? shade_shader(sc, spec_frame, ra.shader_config, ra.rgb, ra.gamma, prog)
+                                               : render::shade_specular(sc, spec_frame, m, ra.rgb, ra.gamma, prog, ra.mode);
         r.img = render::compose(base, r.run);
         res.push_back(std::move(r));
         if (m == ra.model) render::write_png(ra.out, res.back().img);
@@ -289,7 +301,7 @@ int cmd_render(int argc, char** argv) {
                 ra.mode == Mode::tuned ? " (tuned mode)" : "",
                 (unsigned long long)main.run.core_pixels, main.run.seconds,
                 double(main.run.core_pixels) / std::max(1e-9, main.run.seconds));
-    if (main.model == render::SpecModel::rtl) {
+    if (main.model == render::SpecModel::rtl || main.model == render::SpecModel::shader) {
         std::printf(", %llu clock cycles", (unsigned long long)main.run.core_cycles);
     }
     std::printf("; rasterization and diffuse %.2f s\n", t_raster);

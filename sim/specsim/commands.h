@@ -20,10 +20,17 @@ int cmd_highlight(int argc, char** argv);  // specsim highlight: companion paper
 int cmd_normalize(int argc, char** argv);  // specsim normalize: companion paper B measured (cmd_normalize.cpp)
 int cmd_parallax(int argc, char** argv);   // specsim parallax: companion paper C measured (cmd_parallax.cpp)
 
+int cmd_setup(int argc, char** argv);   // specsim setup: span ends through spec_setup (cmd_setup.cpp, issue 13)
+int cmd_bench_shader(int argc, char** argv);
+int cmd_setup_accuracy(int argc, char** argv);   // specsim setup-accuracy: the shader against the host (issue 13)   // specsim bench-shader: spec_shader's pixels per clock (issue 13)
+
 // The usage lines of these commands, for specsim --help.
 extern const char* const kRenderUsage;
 extern const char* const kBenchUsage;
 extern const char* const kTunedUsage;
 extern const char* const kMethodsUsage;
+extern const char* const kSetupUsage;
+extern const char* const kBenchShaderUsage;
+extern const char* const kSetupAccuracyUsage;
 
 }  // namespace spec

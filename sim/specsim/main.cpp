@@ -424,7 +424,7 @@ int main(int argc, char** argv) {
         if (argc < 2) throw UsageError("missing command (span, fig8, demo, accuracy, vectors); see specsim --help");
         const std::string cmd = argv[1];
         if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::cout << kUsage << kRenderUsage << kBenchUsage << kTunedUsage << kMethodsUsage;
+            std::cout << kUsage << kRenderUsage << kBenchUsage << kTunedUsage << kMethodsUsage << kSetupUsage << kBenchShaderUsage << kSetupAccuracyUsage;
             return 0;
         }
         if (cmd == "span") return cmd_span(argc, argv);
@@ -443,6 +443,9 @@ int main(int argc, char** argv) {
         if (cmd == "parallax") return cmd_parallax(argc, argv);
         if (cmd == "compare") return cmd_compare(argc, argv);
         if (cmd == "tables") return cmd_tables(argc, argv);
+        if (cmd == "setup") return cmd_setup(argc, argv);
+        if (cmd == "bench-shader") return cmd_bench_shader(argc, argv);
+        if (cmd == "setup-accuracy") return cmd_setup_accuracy(argc, argv);
         throw UsageError("unknown command '" + cmd + "'; see specsim --help");
     } catch (const std::exception& e) {   // UsageError and every other error: one line, exit 2
         std::cerr << "specsim: " << spec::printable(e.what()) << "\n";

@@ -1,0 +1,12 @@
+spec_setup_ramdelay.v
+spec_setup_prescale.v
+spec_setup_gain.v
+spec_cordic_pass.v
+spec_setup_log2.v
+spec_setup_exp2.v
+spec_setup_div.v
+spec_setup_pipe.v
+spec_setup_fifo.v
+spec_setup_engine.v
+spec_setup.v
+spec_shader.v

@@ -1,0 +1,309 @@
+// setup_driver.h - the span-ends beat of spec_setup / spec_shader (docs/setup.md) packed in C++, and a
+// driver for the Verilated spec_setup_pipe (the fully pipelined arithmetic, no handshake).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <random>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "setup_model.h"
+#include "setup_params.h"
+#include "spec_params.h"
+#include "verilated.h"
+
+namespace spec {
+
+// Bits [lsb +: width] of a little-endian array of 32-bit words.
+inline void put_bits(uint32_t* w, int lsb, int width, uint64_t v) {
+    for (int b = 0; b < width; ++b) {
+        const int pos = lsb + b;
+        if ((v >> b) & 1) w[pos / 32] |= 1u << (pos % 32);
+        else w[pos / 32] &= ~(1u << (pos % 32));
+    }
+}
+inline uint64_t get_bits(const uint32_t* w, int lsb, int width) {
+    uint64_t v = 0;
+    for (int b = 0; b < width; ++b) v |= uint64_t((w[(lsb + b) / 32] >> ((lsb + b) % 32)) & 1) << b;
+    return v;
+}
+
+// The span-ends beat (docs/setup.md; offsets from rom/setup_params.h) as BEAT_W / 32 words.
+inline void pack_setup_beat(const SetupInput& in, uint32_t w[setup_params::BEAT_W / 32]) {
+    for (int i = 0; i < setup_params::BEAT_W / 32; ++i) w[i] = 0;
+    const int32_t* v[4] = {in.n1, in.n2, in.h1, in.h2};
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k)
+            put_bits(w, setup_params::BEAT_VEC_LSB + 16 * (3 * i + k), setup_params::VEC_W, static_cast<uint32_t>(v[i][k]));
+    put_bits(w, setup_params::BEAT_STR_LSB, setup_params::STR_W, in.strength);
+    put_bits(w, setup_params::BEAT_N_LSB, spec_params::N_W, in.n);
+    put_bits(w, setup_params::BEAT_L_LSB, spec_params::L_W, in.l);
+    put_bits(w, setup_params::BEAT_RULE_BIT, 1, in.midpoint ? 1 : 0);
+}
+
+// spec_stream's descriptor (offsets from rom/spec_params.h) back into register contents.
+inline SpanRegs unpack_descriptor(const uint32_t w[spec_params::DESC_W / 32]) {
+    SpanRegs r;
+    r.c = static_cast<uint32_t>(get_bits(w, spec_params::DESC_C_LSB, spec_params::C_W));
+    r.n = static_cast<uint32_t>(get_bits(w, spec_params::DESC_N_LSB, spec_params::N_W));
+    r.len = static_cast<uint32_t>(get_bits(w, spec_params::DESC_L_LSB, spec_params::L_W));
+    r.zeta0 = static_cast<int32_t>(get_bits(w, spec_params::DESC_ZETA0_LSB, spec_params::ANG_W));
+    r.dzeta = static_cast<int32_t>(get_bits(w, spec_params::DESC_DZETA_LSB, spec_params::ANG_W));
+    return r;
+}
+// The descriptor's bits outside its fields (spec_setup writes 0 there).
+inline bool descriptor_reserved_zero(const uint32_t w[spec_params::DESC_W / 32]) {
+    uint32_t m[spec_params::DESC_W / 32] = {};
+    for (int i = 0; i < spec_params::DESC_W / 32; ++i) m[i] = w[i];
+    put_bits(m, spec_params::DESC_C_LSB, spec_params::C_W, 0);
+    put_bits(m, spec_params::DESC_N_LSB, spec_params::N_W, 0);
+    put_bits(m, spec_params::DESC_L_LSB, spec_params::L_W, 0);
+    put_bits(m, spec_params::DESC_ZETA0_LSB, spec_params::ANG_W, 0);
+    put_bits(m, spec_params::DESC_DZETA_LSB, spec_params::ANG_W, 0);
+    for (int i = 0; i < spec_params::DESC_W / 32; ++i)
+        if (m[i]) return false;
+    return true;
+}
+
+struct SetupOut {
+    SpanRegs regs;
+    unsigned flags;
+    bool reserved_zero = true;   // the descriptor's bits outside its fields are 0
+};
+
+// Drives Vspec_setup_pipe: one span per call of push (or a bubble), outputs collected in order.
+template <class V>
+class SetupPipeDriver {
+public:
+    SetupPipeDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
+        top_->clk = 0;
+        top_->rst = 1;
+        top_->in_valid = 0;
+        top_->eval();
+        step();
+        top_->rst = 0;
+    }
+    ~SetupPipeDriver() {
+        Verilated::threadContextp(ctx_.get());
+        top_->final();
+        top_.reset();
+    }
+    V& top() { return *top_; }
+    // One clock with the span (or none) at the input.
+    void push(const SetupInput* in) {
+        top_->in_valid = in != nullptr;
+        if (in) {
+            uint32_t w[setup_params::BEAT_W / 32];
+            pack_setup_beat(*in, w);
+            uint32_t vec[(12 * setup_params::VEC_W + 31) / 32] = {};
+            for (int k = 0; k < 12; ++k)
+                put_bits(vec, setup_params::VEC_W * k, setup_params::VEC_W,
+                         get_bits(w, setup_params::BEAT_VEC_LSB + 16 * k, setup_params::VEC_W));
+            for (int i = 0; i < (12 * setup_params::VEC_W + 31) / 32; ++i) top_->in_vec[i] = vec[i];
+            top_->in_str = in->strength;
+            top_->in_n = in->n;
+            top_->in_l = in->l;
+            top_->in_rule = in->midpoint;
+        }
+        step();
+    }
+    std::vector<SetupOut>& out() { return out_; }
+
+private:
+    void step() {
+        top_->clk = 1;
+        top_->eval();
+        top_->clk = 0;
+        top_->eval();
+        if (top_->out_valid) {
+            SetupOut o;
+            o.regs.c = top_->out_c;
+            o.regs.n = top_->out_n;
+            o.regs.len = top_->out_l;
+            o.regs.zeta0 = static_cast<int32_t>(top_->out_zeta0);
+            o.regs.dzeta = static_cast<int32_t>(top_->out_dzeta);
+            o.flags = top_->out_flags;
+            out_.push_back(o);
+        }
+    }
+    static VerilatedContext* make_current(VerilatedContext* c) {
+        Verilated::threadContextp(c);
+        return c;
+    }
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<V> top_;
+    std::vector<SetupOut> out_;
+};
+
+// Drives a Verilated spec_setup (either configuration) through its AXI4-Stream ports with random stalls on
+// both sides (per-cycle probabilities that the source offers a beat and that the sink is ready).
+template <class V>
+class SetupStreamDriver {
+public:
+    SetupStreamDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
+        top_->clk = 0;
+        top_->s_axis_tvalid = 0;
+        top_->m_axis_tready = 1;
+        top_->rst_n = 1;
+        top_->eval();
+        reset();
+    }
+    ~SetupStreamDriver() {
+        Verilated::threadContextp(ctx_.get());
+        top_->final();
+        top_.reset();
+    }
+    V& top() { return *top_; }
+    uint64_t cycle() const { return cycle_; }
+    void reset() {
+        top_->rst_n = 0;
+        step();
+        top_->rst_n = 1;
+    }
+    void step() {
+        top_->clk = 1;
+        top_->eval();
+        top_->clk = 0;
+        top_->eval();
+        ++cycle_;
+    }
+    // Sends the spans (offer / ready: probabilities per cycle) and returns the descriptors in order.
+    // `on_cycle` is called each cycle after the inputs are set, before the clock edge.
+    std::vector<SetupOut> run(const std::vector<SetupInput>& spans, double offer_p, double ready_p, std::mt19937_64& rng,
+                              uint64_t max_cycles = 0, const std::function<void(V&)>& on_cycle = {}) {
+        if (max_cycles == 0) max_cycles = 20000 + spans.size() * 4000;
+        std::bernoulli_distribution offer(offer_p), ready(ready_p);
+        std::vector<SetupOut> out;
+        size_t next = 0;
+        bool offering = false;
+        for (uint64_t c = 0; out.size() < spans.size(); ++c) {
+            if (c > max_cycles) throw std::runtime_error("spec_setup: no progress (deadlock?)");
+            if (!offering && next < spans.size() && offer(rng)) offering = true;
+            top_->s_axis_tvalid = offering;
+            if (offering) {
+                uint32_t w[setup_params::BEAT_W / 32];
+                pack_setup_beat(spans[next], w);
+                for (int i = 0; i < setup_params::BEAT_W / 32; ++i) top_->s_axis_tdata[i] = w[i];
+            }
+            top_->m_axis_tready = ready(rng);
+            top_->eval();
+            if (on_cycle) on_cycle(*top_);
+            const bool in_fire = top_->s_axis_tvalid && top_->s_axis_tready;
+            if (top_->m_axis_tvalid && top_->m_axis_tready) {
+                uint32_t w[spec_params::DESC_W / 32];
+                for (int i = 0; i < spec_params::DESC_W / 32; ++i) w[i] = top_->m_axis_tdata[i];
+                out.push_back({unpack_descriptor(w), static_cast<unsigned>(top_->m_axis_tuser)});
+                out.back().reserved_zero = descriptor_reserved_zero(w);
+            }
+            step();
+            if (in_fire) {
+                offering = false;
+                ++next;
+            }
+        }
+        top_->s_axis_tvalid = 0;
+        return out;
+    }
+
+private:
+    static VerilatedContext* make_current(VerilatedContext* c) {
+        Verilated::threadContextp(c);
+        return c;
+    }
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<V> top_;
+    uint64_t cycle_ = 0;
+};
+
+// A pixel out of spec_shader.
+struct ShaderPixel {
+    uint32_t value;
+    bool last;
+    unsigned flags;
+};
+
+// Drives a Verilated spec_shader (either configuration): span ends in, pixels out, random stalls on both sides.
+template <class V>
+class ShaderDriver {
+public:
+    ShaderDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
+        top_->clk = 0;
+        top_->s_axis_tvalid = 0;
+        top_->m_axis_tready = 1;
+        top_->rst_n = 1;
+        top_->eval();
+        reset();
+    }
+    ~ShaderDriver() {
+        Verilated::threadContextp(ctx_.get());
+        top_->final();
+        top_.reset();
+    }
+    V& top() { return *top_; }
+    uint64_t cycle() const { return cycle_; }
+    void reset() {
+        top_->rst_n = 0;
+        step();
+        top_->rst_n = 1;
+    }
+    void step() {
+        top_->clk = 1;
+        top_->eval();
+        top_->clk = 0;
+        top_->eval();
+        ++cycle_;
+    }
+    // Sends the spans and returns every pixel in order (sum of l + 1). `on_cycle`: called each cycle after the
+    // inputs are set, before the edge.
+    std::vector<ShaderPixel> run(const std::vector<SetupInput>& spans, double offer_p, double ready_p,
+                                 std::mt19937_64& rng, uint64_t max_cycles = 0,
+                                 const std::function<void(V&)>& on_cycle = {}) {
+        size_t expect = 0;
+        for (const auto& s : spans) expect += size_t(s.l & 0xffffu) + 1;
+        if (max_cycles == 0) max_cycles = 20000 + spans.size() * 4000 + expect * 64;
+        std::bernoulli_distribution offer(offer_p), ready(ready_p);
+        std::vector<ShaderPixel> out;
+        out.reserve(expect);
+        size_t next = 0;
+        bool offering = false;
+        for (uint64_t c = 0; out.size() < expect || next < spans.size(); ++c) {
+            if (c > max_cycles) throw std::runtime_error("spec_shader: no progress (deadlock?)");
+            if (!offering && next < spans.size() && offer(rng)) offering = true;
+            top_->s_axis_tvalid = offering;
+            if (offering) {
+                uint32_t w[setup_params::BEAT_W / 32];
+                pack_setup_beat(spans[next], w);
+                for (int i = 0; i < setup_params::BEAT_W / 32; ++i) top_->s_axis_tdata[i] = w[i];
+            }
+            top_->m_axis_tready = ready(rng);
+            top_->eval();
+            if (on_cycle) on_cycle(*top_);
+            const bool in_fire = top_->s_axis_tvalid && top_->s_axis_tready;
+            if (top_->m_axis_tvalid && top_->m_axis_tready) {
+                if (out.size() == expect) throw std::runtime_error("spec_shader: a pixel nobody asked for");
+                out.push_back({top_->m_axis_tdata, top_->m_axis_tlast != 0, static_cast<unsigned>(top_->m_axis_tuser)});
+            }
+            step();
+            if (in_fire) {
+                offering = false;
+                ++next;
+            }
+        }
+        top_->s_axis_tvalid = 0;
+        return out;
+    }
+
+private:
+    static VerilatedContext* make_current(VerilatedContext* c) {
+        Verilated::threadContextp(c);
+        return c;
+    }
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<V> top_;
+    uint64_t cycle_ = 0;
+};
+
+}  // namespace spec
