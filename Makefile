@@ -269,7 +269,7 @@ BOARD ?=
 MODE ?= 640x480
 FRAMES ?= 2
 BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
-CORE_RTL := $(RTL_CORE)
+CORE_RTL := $(RTL_CORE) $(RTL_SHADER)
 
 .PHONY: board-sim bitstream flash board-tables lint-boards check-board
 

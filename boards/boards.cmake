@@ -18,7 +18,7 @@ board_read_list(BOARD_ICEBREAKER boards/icebreaker/icebreaker.f)
 board_read_list(BOARD_ULX3S boards/ulx3s/ulx3s.f)
 file(GLOB BOARD_ICEBREAKER_SIM ${CMAKE_SOURCE_DIR}/boards/icebreaker/sim/*.v)
 file(GLOB BOARD_ULX3S_SIM ${CMAKE_SOURCE_DIR}/boards/ulx3s/sim/*.v)
-set(BOARD_CORE_RTL ${RTL_CORE})
+set(BOARD_CORE_RTL ${RTL_SETUP})   # the core and the shader (rtl/spec_core.f, rtl/spec_shader.f)
 set(BOARD_GEN ${CMAKE_SOURCE_DIR}/boards/common/gen)
 
 # The C++ model, the double-precision reference, capture, TMDS, boardsim's parse/compute/report
@@ -27,7 +27,7 @@ add_library(boardmodel STATIC
   sim/board/board_capture.cpp sim/board/tmds.cpp sim/board/boardsim_cli.cpp sim/board/boardsim_compute.cpp
   sim/board/boardsim_report.cpp)
 target_include_directories(boardmodel PUBLIC sim/board)
-target_link_libraries(boardmodel PUBLIC specrender)
+target_link_libraries(boardmodel PUBLIC specrender specsetup)
 target_compile_options(boardmodel PRIVATE ${WARN})
 
 # The board tops with the primitives' models (Verilator --timing: the PLL models schedule their clocks)
@@ -35,7 +35,8 @@ function(board_file_args out mode k)
   set(${out} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
     "-GOBJ_FILE=\"${BOARD_GEN}/objects_${mode}.hex\"" "-GSHADE_FILE=\"${BOARD_GEN}/shade_${mode}.hex\""
     "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
-    "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k} PARENT_SCOPE)
+    "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k}
+    "-GLOG2_FILE=\"${ROM_DIR}/setup_log2.hex\"" "-GEXP2_FILE=\"${ROM_DIR}/setup_exp2.hex\"" PARENT_SCOPE)
 endfunction()
 set(BOARD_VL_ARGS -Wall -Wno-fatal -I${ROM_DIR} -I${BOARD_GEN} -O3 --x-assign fast --x-initial fast --timing)
 function(board_verilate target board prefix mode k)

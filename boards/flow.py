@@ -41,8 +41,8 @@ def read_list(path):
 
 
 def core_rtl():
-    # the core's modules: the one file list rtl/spec_core.f (names relative to rtl/)
-    return [os.path.join("rtl", n) for n in read_list("rtl/spec_core.f")]
+    # the core's and the shader's modules: rtl/spec_core.f, rtl/spec_shader.f (names relative to rtl/)
+    return [os.path.join("rtl", n) for n in read_list("rtl/spec_core.f") + read_list("rtl/spec_shader.f")]
 
 
 def run(cmd, log):
@@ -82,7 +82,7 @@ BOARDS = {
         "split_k": 32, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
-        "freq_mhz": {"640x480": 25.0, "1280x720": 74.29},
+        "freq_mhz": {"640x480": 50.0, "1280x720": 74.29},
         "cells": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"]},
         "limits": {"lut": 24288, "bram": 56, "dsp": 28},
     },
@@ -97,7 +97,8 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
         "SCENE_FILE": "%s/scene_%s.hex" % (GEN, mode), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"]),
         "OBJ_FILE": "%s/objects_%s.hex" % (GEN, mode), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, mode),
         "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
-        "ROM12_FILE": rom_dir + "/rom12_cosk.hex",
+        "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": "rom/setup_log2.hex",
+        "EXP2_FILE": "rom/setup_exp2.hex",
     }
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += " -set SPLIT_K %d " % d["split_k"] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())

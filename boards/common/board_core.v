@@ -49,7 +49,9 @@ module board_core #(
     parameter SHADERS = 1,             // 1: both passes through one shader; 2: one shader per pass
     parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = small (iCE40), 0 = pipelined
     parameter ROM9_FILE = "",
-    parameter ROM12_FILE = ""
+    parameter ROM12_FILE = "",
+    parameter LOG2_FILE = "",          // spec_setup's tables
+    parameter EXP2_FILE = ""
 ) (
     input  wire                  clk,
     input  wire                  rst_n,
@@ -140,7 +142,8 @@ module board_core #(
     wire [15:0] px_dif, px_spc;
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(SHADERS), .SMALL(SHADER_SMALL),
-        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
+        .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),

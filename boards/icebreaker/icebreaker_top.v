@@ -21,7 +21,9 @@ module icebreaker_top #(
     parameter SHADE_FILE = "boards/common/gen/shade_640x480.hex",
     parameter SIN_FILE = "boards/common/gen/light_sin.hex",
     parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
-    parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex"
+    parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex",
+    parameter LOG2_FILE = "rom/setup_log2.hex",
+    parameter EXP2_FILE = "rom/setup_exp2.hex"
 ) (
     input  wire       CLK,        // 12 MHz
     input  wire       BTN_N,
@@ -69,7 +71,7 @@ module icebreaker_top #(
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
         .MUL_STEPS(1), .SQRT_STEPS(1), .SHADERS(1), .SHADER_SMALL(1),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
         .frame(frame)

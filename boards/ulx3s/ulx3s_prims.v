@@ -9,25 +9,26 @@
 /* verilator lint_off DECLFILENAME */
 
 // ulx3s_pll - 25 MHz from the board's oscillator to the TMDS bit clock (half the bit rate: the DDR outputs
-// send two bits per clock) and the pixel clock, phase-locked (the serializer relies on it).
+// send two bits per clock) and the design clock, phase-locked (the serializer relies on it).
 // EHXPLLL with feedback from CLKOP: CLKOP = 25 MHz x CLKFB_DIV / CLKI_DIV, VCO = CLKOP x CLKOP_DIV
 // (400..800 MHz), CLKOS = VCO / CLKOS_DIV, phase detector input 25 MHz / CLKI_DIV.
 //   640 x 480 (MODE720 = 0): CLKI_DIV 1, CLKFB_DIV 5: CLKOP 125 MHz, CLKOP_DIV 4 (VCO 500 MHz),
-//                            CLKOS_DIV 20: pixel clock 25.000 MHz (VESA: 25.175 MHz, -0.7 %, 59.5 Hz)
+//                            CLKOS_DIV 10: design clock 50 MHz, twice the pixel clock of 25.000 MHz
+//                            (VESA: 25.175 MHz, -0.7 %, 59.5 Hz)
 //   1280 x 720 (MODE720 = 1): CLKI_DIV 7, CLKFB_DIV 104: CLKOP 371.43 MHz, CLKOP_DIV 2 (VCO 742.9 MHz),
-//                            CLKOS_DIV 10: pixel clock 74.286 MHz (CTA-861: 74.25 MHz, +0.05 %)
+//                            CLKOS_DIV 10: design clock = pixel clock 74.286 MHz (CTA-861: 74.25 MHz, +0.05 %)
 module ulx3s_pll #(
     parameter MODE720 = 0
 ) (
     input  wire clk_25mhz,
     output wire clk_bit,
-    output wire clk_pix,
+    output wire clk_core,
     output wire locked
 );
     localparam CLKI_DIV = MODE720 ? 7 : 1;
     localparam CLKFB_DIV = MODE720 ? 104 : 5;
     localparam CLKOP_DIV = MODE720 ? 2 : 4;
-    localparam CLKOS_DIV = MODE720 ? 10 : 20;
+    localparam CLKOS_DIV = 10;
     wire clkop, clkintfb_unused;
     (* FREQUENCY_PIN_CLKI = "25" *)
     EHXPLLL #(
@@ -55,7 +56,7 @@ module ulx3s_pll #(
         .STDBY(1'b0),
         .CLKI(clk_25mhz),
         .CLKOP(clkop),
-        .CLKOS(clk_pix),
+        .CLKOS(clk_core),
         .CLKFB(clkop),
         .CLKINTFB(clkintfb_unused),
         .PHASESEL0(1'b0),

@@ -3,12 +3,13 @@
 // TMDS-encoded in the FPGA; MODE = 2 is the 128 x 96 test raster of the quick board simulation (make test).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
-//   clk_pix  the pixel clock: the whole of board_core (one shader per pass, one pixel per clock) and the
-//            three TMDS encoders;
+//   clk_core the design clock: the whole of board_core (one shader per pass) and the three TMDS encoders;
+//            twice the pixel clock at 640 x 480 (pix_ce every other cycle: the renderer gets two clocks per
+//            pixel, which the pipelined setup's latency needs), the pixel clock itself at 1280 x 720;
 //   clk_bit  5 x the pixel clock: the serializer and the DDR output registers (10 bits per pixel).
-// Crossings (docs/boards.md, "Clock domains"): the encoders' characters and a toggle, pixel -> bit domain,
+// Crossings (docs/boards.md, "Clock domains"): the encoders' characters and a toggle, core -> bit domain,
 // through tmds_serializer (toggle synchronizer, characters sampled at a fixed phase while stable); the reset,
-// pixel -> bit domain, through cdc_sync. Nothing crosses back but the status LED.
+// core -> bit domain, through cdc_sync. Nothing crosses back but a status LED.
 // Reset: the PLL's lock and the power button (btn[0], low while pressed), synchronized.
 // LEDs: led[0] = a line was not rendered in time (sticky), led[1] = the serializer lost step with the pixel
 // clock (sticky), led[7] blinks with the frame counter.
@@ -25,7 +26,9 @@ module ulx3s_top #(
     parameter SHADE_FILE = "boards/common/gen/shade_640x480.hex",
     parameter SIN_FILE = "boards/common/gen/light_sin.hex",
     parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
-    parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex"
+    parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex",
+    parameter LOG2_FILE = "rom/setup_log2.hex",
+    parameter EXP2_FILE = "rom/setup_exp2.hex"
 ) (
     input  wire       clk_25mhz,
     input  wire [6:0] btn,
@@ -44,11 +47,19 @@ module ulx3s_top #(
     localparam H_POL = (MODE == 1) ? `BOARD1280_H_POL : (MODE == 2) ? `BOARD128_H_POL : `BOARD640_H_POL;
     localparam V_POL = (MODE == 1) ? `BOARD1280_V_POL : (MODE == 2) ? `BOARD128_V_POL : `BOARD640_V_POL;
 
-    wire clk_bit, clk_pix, locked;
-    ulx3s_pll #(.MODE720(MODE == 1)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_pix(clk_pix),
+    wire clk_bit, clk_core, locked;
+    ulx3s_pll #(.MODE720(MODE == 1)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_core(clk_core),
                                           .locked(locked));
     wire rst_n, rst_bit_n;
-    cdc_sync #(.STAGES(2)) u_rst (.clk(clk_pix), .rst_n(locked), .d(btn[0]), .q(rst_n));
+    cdc_sync #(.STAGES(2)) u_rst (.clk(clk_core), .rst_n(locked), .d(btn[0]), .q(rst_n));
+
+    // the pixel clock enable: every other cycle at 640 x 480, every cycle at 1280 x 720
+    reg pix_half;
+    always @(posedge clk_core) begin
+        if (!rst_n) pix_half <= 1'b0;
+        else pix_half <= ~pix_half;
+    end
+    wire pix_ce = (MODE == 1) ? 1'b1 : pix_half;
     cdc_sync #(.STAGES(2)) u_rst_bit (.clk(clk_bit), .rst_n(locked), .d(rst_n), .q(rst_bit_n));
 
     wire [23:0] rgb;
@@ -62,21 +73,22 @@ module ulx3s_top #(
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
         .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS(2), .SHADER_SMALL(0),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_core (
-        .clk(clk_pix), .rst_n(rst_n), .pix_ce(1'b1), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
+        .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
         .frame(frame)
     );
 
     // TMDS: blue carries the syncs in its control characters (DVI 1.0)
     wire [9:0] q_r, q_g, q_b;
-    tmds_encoder u_enc_b (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c({vs, hs}), .d(rgb[7:0]), .q(q_b));
-    tmds_encoder u_enc_g (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c(2'b00), .d(rgb[15:8]), .q(q_g));
-    tmds_encoder u_enc_r (.clk(clk_pix), .rst_n(rst_n), .ce(1'b1), .de(de), .c(2'b00), .d(rgb[23:16]), .q(q_r));
+    tmds_encoder u_enc_b (.clk(clk_core), .rst_n(rst_n), .ce(pix_ce), .de(de), .c({vs, hs}), .d(rgb[7:0]), .q(q_b));
+    tmds_encoder u_enc_g (.clk(clk_core), .rst_n(rst_n), .ce(pix_ce), .de(de), .c(2'b00), .d(rgb[15:8]), .q(q_g));
+    tmds_encoder u_enc_r (.clk(clk_core), .rst_n(rst_n), .ce(pix_ce), .de(de), .c(2'b00), .d(rgb[23:16]), .q(q_r));
+    // toggles with each new character triple (the encoders load in pix_ce cycles)
     reg tgl;
-    always @(posedge clk_pix) begin
+    always @(posedge clk_core) begin
         if (!rst_n) tgl <= 1'b0;
-        else tgl <= ~tgl;
+        else if (pix_ce) tgl <= ~tgl;
     end
 
     wire [7:0] pairs;

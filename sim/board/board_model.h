@@ -41,8 +41,8 @@ std::array<uint32_t, 3> compose(const ObjQuant& o, uint32_t dif, uint32_t spc, i
 std::array<uint32_t, 3> background(const Quant& q, int out_bits);
 
 // A span through the shader: end normals as sphere_spans.v gives them, one light vector for both ends
-// (H for the specular pass, L for the diffuse pass, Q1.14), exponent, strength (UQ0.16), l intervals;
-// returns the l + 1 pixels (UQ0.16).
+// (H for the specular pass, L for the diffuse pass, Q1.14), exponent, strength (UQ1.15, spec_shader's), l
+// intervals; returns the l + 1 pixels (UQ0.16).
 struct ShadeIn {
     std::array<int32_t, 3> n1{}, n2{};
     std::array<int32_t, 3> light{};

@@ -13,8 +13,8 @@ namespace board {
 struct ObjQuant {
     uint32_t ka = 0;        // UQ0.16 (compose)
     uint32_t cd[3] = {};    // UQ1.8, 256 = 1.0 (compose)
-    uint32_t kd = 0;        // diffuse strength kd Is, UQ0.16 (the diffuse pass's C factor)
-    uint32_t ks = 0;        // specular strength ks Is, UQ0.16
+    uint32_t kd = 0;        // diffuse strength kd Is, UQ1.15 (spec_shader's Is*ks field, the diffuse pass)
+    uint32_t ks = 0;        // specular strength ks Is, UQ1.15 (the specular pass)
     unsigned n = 0;
 };
 
@@ -31,6 +31,7 @@ inline uint32_t q16(double v) {   // round(v 2^16), at most 65535
     return r >= 65535.0 ? 65535u : r <= 0 ? 0u : uint32_t(r);
 }
 inline int32_t q14(double v) { return int32_t(std::lround(v * 16384.0)); }
+inline uint32_t q15(double v) { return uint32_t(std::lround(v * 32768.0)); }   // UQ1.15, v in [0, 2)
 
 Quant quantize(const BoardScene& s);
 

@@ -173,7 +173,7 @@ std::vector<std::string> write_rtl_tables(const std::string& dir, const std::vec
         std::ostringstream sc, ob, sh;
         sc << "// " << mode << ": {cx[10:0], cy[9:0], r2sq[17:0], r2[8:0]} per sphere (boardsim gen)\n";
         ob << "// " << mode << ": {ka[15:0], cd_r[8:0], cd_g[8:0], cd_b[8:0]} per sphere (boardsim gen)\n";
-        sh << "// " << mode << ": {n[9:0], kd[15:0], ks[15:0]} per sphere (boardsim gen)\n";
+        sh << "// " << mode << ": {n[9:0], kd[15:0], ks[15:0]} per sphere, strengths UQ1.15 (boardsim gen)\n";
         for (size_t i = 0; i < s.spheres.size(); ++i) {
             const Sphere& sp = s.spheres[i];
             const ObjQuant& oq = q.obj[i];
@@ -228,8 +228,8 @@ Quant quantize(const BoardScene& s) {
         ObjQuant o;
         o.ka = q16(sp.ka);
         for (int c = 0; c < 3; ++c) o.cd[c] = uint32_t(std::lround(sp.color[c] * 256.0));
-        o.kd = q16(sp.kd);
-        o.ks = q16(sp.ks);
+        o.kd = q15(sp.kd);
+        o.ks = q15(sp.ks);
         o.n = sp.n;
         q.obj.push_back(o);
     }

@@ -13,8 +13,8 @@ namespace board {
 // fixed-point one); used to measure how much of the error is the split and how much the setup.
 Shader host_shader(const Model& m, host::GammaRule rule);
 
-// The RTL's shader pass (boards/common/board_shader.v), bit for bit. SCAFFOLD until spec_shader lands:
-// the span goes to spec_stream flat (n = 0, C = strength), every pixel is the strength.
+// The RTL's shader pass (boards/common/board_shader.v: spec_shader), bit for bit: spec_setup's model
+// (sim/setup/setup_model.h) with the midpoint gamma rule, then the core's model m on its registers.
 Shader rtl_shader(const Model& m);
 
 }  // namespace board
