@@ -70,7 +70,7 @@ def count_cells(stat_text, patterns):
 BOARDS = {
     "icebreaker": {
         "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
-        "split_k": 16, "params": {"640x480": {"TEST": 0}},
+        "split_k": 8, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
         # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
         "freq_mhz": {"640x480": 50.25},
         "cells": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"],
@@ -80,6 +80,7 @@ BOARDS = {
     "ulx3s": {
         "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
         "split_k": 32, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
+        "scene": {"640x480": "640x480", "1280x720": "1280x720"},
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
         "freq_mhz": {"640x480": 50.0, "1280x720": 74.29},
@@ -93,9 +94,10 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
     d = BOARDS[b]
     files = core_rtl() + read_list("boards/common/board_common.f") + read_list(d["list"])
     params = dict(d["params"][mode])
+    sm = d["scene"][mode]   # the scene the renderer draws (the iCEBreaker: its half-size frame buffer's)
     strings = {
-        "SCENE_FILE": "%s/scene_%s.hex" % (GEN, mode), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"]),
-        "OBJ_FILE": "%s/objects_%s.hex" % (GEN, mode), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, mode),
+        "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"]),
+        "OBJ_FILE": "%s/objects_%s.hex" % (GEN, sm), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, sm),
         "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
         "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": "rom/setup_log2.hex",
         "EXP2_FILE": "rom/setup_exp2.hex",
@@ -128,7 +130,7 @@ def build(board, mode, args, tools, out):
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)
     if board == "icebreaker":
-        synth = "synth_ice40 -dsp -top %s -json %s" % (d["top"], net)
+        synth = "synth_ice40 -dsp -spram -top %s -json %s" % (d["top"], net)
     else:
         synth = "synth_ecp5 -top %s -json %s" % (d["top"], net)
     rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, stat, synth)],

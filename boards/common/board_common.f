@@ -13,5 +13,7 @@ boards/common/shade_passes.v
 boards/common/compose.v
 boards/common/line_buffer.v
 boards/common/board_core.v
+boards/common/frame_store.v
+boards/common/board_core_fb.v
 boards/common/tmds_encoder.v
 boards/common/tmds_serializer.v

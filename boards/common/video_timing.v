@@ -37,13 +37,12 @@ module video_timing #(
 );
     localparam H_TOTAL = H_ACTIVE + H_FP + H_SYNC + H_BP;
     localparam V_TOTAL = V_ACTIVE + V_FP + V_SYNC + V_BP;
-    localparam [X_W-1:0] H_LAST = H_TOTAL - 1;
-    localparam [Y_W-1:0] V_LAST = V_TOTAL - 1;
-    localparam [X_W-1:0] HS_BEGIN = H_ACTIVE + H_FP;
-    localparam [X_W-1:0] HS_END = H_ACTIVE + H_FP + H_SYNC;
-    localparam [Y_W-1:0] VS_BEGIN = V_ACTIVE + V_FP;
-    localparam [Y_W-1:0] VS_END = V_ACTIVE + V_FP + V_SYNC;
-    localparam [Y_W-1:0] V_ACT = V_ACTIVE;
+    localparam integer H_LAST_I = H_TOTAL - 1, V_LAST_I = V_TOTAL - 1;
+    localparam integer HS_BEGIN_I = H_ACTIVE + H_FP, HS_END_I = H_ACTIVE + H_FP + H_SYNC;
+    localparam integer VS_BEGIN_I = V_ACTIVE + V_FP, VS_END_I = V_ACTIVE + V_FP + V_SYNC;
+    localparam [X_W-1:0] H_LAST = H_LAST_I[X_W-1:0];
+    localparam [Y_W-1:0] V_LAST = V_LAST_I[Y_W-1:0];
+    localparam [Y_W-1:0] V_ACT = V_ACTIVE[Y_W-1:0];
 
     // misconfiguration stops elaboration (every tool) and simulation (with a message)
     generate
@@ -60,12 +59,15 @@ module video_timing #(
     // Every decision is an equality with a constant on the registered counters (no magnitude compares
     // chained after the increments): flags for "active column", "active line", hsync and vsync change at the
     // count before their boundary, in step with the counters.
-    localparam [X_W-1:0] H_ACT_LAST = H_ACTIVE - 1;
-    localparam [Y_W-1:0] V_ACT_LAST = V_ACTIVE - 1;
-    localparam [X_W-1:0] HS_ON = HS_BEGIN - 1'b1;
-    localparam [X_W-1:0] HS_OFF = HS_END - 1'b1;
-    localparam [Y_W-1:0] VS_ON = VS_BEGIN - 1'b1;
-    localparam [Y_W-1:0] VS_OFF = VS_END - 1'b1;
+    localparam integer H_ACT_LAST_I = H_ACTIVE - 1, V_ACT_LAST_I = V_ACTIVE - 1;
+    localparam integer HS_ON_I = HS_BEGIN_I - 1, HS_OFF_I = HS_END_I - 1;
+    localparam integer VS_ON_I = VS_BEGIN_I - 1, VS_OFF_I = VS_END_I - 1;
+    localparam [X_W-1:0] H_ACT_LAST = H_ACT_LAST_I[X_W-1:0];
+    localparam [Y_W-1:0] V_ACT_LAST = V_ACT_LAST_I[Y_W-1:0];
+    localparam [X_W-1:0] HS_ON = HS_ON_I[X_W-1:0];
+    localparam [X_W-1:0] HS_OFF = HS_OFF_I[X_W-1:0];
+    localparam [Y_W-1:0] VS_ON = VS_ON_I[Y_W-1:0];
+    localparam [Y_W-1:0] VS_OFF = VS_OFF_I[Y_W-1:0];
     reg h_act, v_act, hs_q, vs_q;      // for the current (h, v): h < H_ACTIVE, v < V_ACTIVE, syncs active
     wire h_wrap = (h == H_LAST);
     wire h_act_d = h_wrap ? 1'b1 : (h == H_ACT_LAST) ? 1'b0 : h_act;

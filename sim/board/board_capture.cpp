@@ -124,30 +124,32 @@ MeasuredTiming VideoCapture::measure() const {
     return m;
 }
 
-std::vector<Frame> VideoCapture::frames(int n) const {
+std::vector<Frame> VideoCapture::all_frames(std::vector<bool>* tags) const {
     const Lines L = cut_lines(s_);
     std::vector<Frame> out;
-    // frame k: the active lines following the k-th vsync leading edge
-    int seen = 0;
-    bool in_vs = false;
+    if (tags) tags->clear();
+    // frame k: the active lines following the k-th vsync leading edge, until the next one
+    bool in_vs = false, collecting = false, tag = false;
     Frame cur;
-    bool collecting = false;
-    for (size_t k = 0; k + 1 < L.start.size() && int(out.size()) < n; ++k) {
+    for (size_t k = 0; k + 1 < L.start.size(); ++k) {
         const size_t a = L.start[k], b = L.start[k + 1];
         const bool vs = (s_[a].vs == L.v_pos);
         if (vs && !in_vs) {
-            if (collecting && cur.h > 0) out.push_back(cur);
-            if (int(out.size()) >= n) break;
+            if (collecting && cur.h > 0) {
+                out.push_back(cur);
+                if (tags) tags->push_back(tag);
+            }
             cur = Frame();
             cur.out_bits = out_bits_;
             collecting = true;
-            ++seen;
         }
         in_vs = vs;
         if (!collecting) continue;
         std::vector<std::array<uint32_t, 3>> row;
         for (size_t i = a; i < b; ++i) {
-            if (s_[i].de) row.push_back({s_[i].rgb[0], s_[i].rgb[1], s_[i].rgb[2]});
+            if (!s_[i].de) continue;
+            if (cur.h == 0 && row.empty()) tag = s_[i].tag;
+            row.push_back({s_[i].rgb[0], s_[i].rgb[1], s_[i].rgb[2]});
         }
         if (row.empty()) continue;
         if (cur.w == 0) cur.w = int(row.size());
@@ -155,9 +157,15 @@ std::vector<Frame> VideoCapture::frames(int n) const {
         cur.px.insert(cur.px.end(), row.begin(), row.end());
         ++cur.h;
     }
-    if (int(out.size()) < n) throw std::runtime_error("capture: fewer than " + std::to_string(n) + " whole frames");
-    (void)seen;
+    // the last frame counts only if the next vsync has begun (it is whole)
     return out;
+}
+
+std::vector<Frame> VideoCapture::frames(int n) const {
+    std::vector<Frame> all = all_frames(nullptr);
+    if (int(all.size()) < n) throw std::runtime_error("capture: fewer than " + std::to_string(n) + " whole frames");
+    all.resize(size_t(n));
+    return all;
 }
 
 TimingCheck check_timing(const MeasuredTiming& m, const VideoMode& mode, double pll_mhz) {

@@ -17,6 +17,7 @@ struct PixelSample {
     uint64_t t_ps = 0;        // time of the sampling clock edge
     uint8_t rgb[3] = {0, 0, 0};
     bool hs = false, vs = false, de = false;   // pin levels
+    bool tag = false;         // a status pin sampled with the pixel (the iCEBreaker: its rendered-frame LED)
 };
 
 // The raster measured from the samples: every line and every frame must show the same figures.
@@ -39,6 +40,8 @@ public:
     // Frames 0 .. n-1 (the active lines after each vsync, in order) as out_bits-per-channel frames.
     // Throws std::runtime_error when the samples do not hold n whole frames.
     std::vector<Frame> frames(int n) const;
+    // Every whole frame captured, and the tag of each frame's first active pixel.
+    std::vector<Frame> all_frames(std::vector<bool>* tags) const;
     MeasuredTiming measure() const;
     size_t samples() const { return s_.size(); }
 

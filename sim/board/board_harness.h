@@ -16,7 +16,8 @@ namespace board {
 struct HarnessOptions {
     std::string board;        // icebreaker | ulx3s
     std::string mode;         // 640x480 | 1280x720 (ulx3s) | 128x96 (test raster)
-    int frames = 2;           // run until this many whole frames have been shown
+    int frames = 2;           // run until this many whole frames have been shown (the iCEBreaker: rendered,
+                              // and the displayed frame after each)
     uint64_t limit_ps = 0;    // stop anyway after this much simulated time (0: from the mode, with margin)
 };
 
@@ -28,8 +29,10 @@ struct HarnessResult {
     double pll_mhz = 0;               // the pixel clock the board's PLL settings promise
     bool late = false;                // board_core's flag (a LED): a line was not rendered in time
     bool out_of_step = false;         // ulx3s: the serializer lost the pixel clock's phase (a LED)
-    int render_clocks_max = 0;        // longest line render, clocks of the design clock
-    int render_clocks_budget = 0;     // clocks per line
+    int render_clocks_max = 0;        // longest line render (racing the beam) or frame render (frame buffer),
+                                      // clocks of the design clock
+    int render_clocks_budget = 0;     // clocks per line (racing the beam; 0 with a frame buffer)
+    bool frame_buffer = false;        // the design draws into a frame buffer (the iCEBreaker)
     // ulx3s: characters that were neither control nor data characters, data characters outside data enable,
     // and the largest running disparity seen on a lane (ones minus zeros since the last control period)
     uint64_t tmds_chars = 0, tmds_bad = 0;

@@ -41,13 +41,20 @@ VideoMode video_mode(const std::string& name) {
         m.h_active = 128, m.h_fp = 8, m.h_sync = 16, m.h_bp = 648;
         m.v_active = 96, m.v_fp = 2, m.v_sync = 2, m.v_bp = 4;
         m.h_pos = false, m.v_pos = false;
+    } else if (name == "320x240" || name == "64x48") {
+        // not a raster: the frame buffer of a display mode of twice the size (the iCEBreaker shows it pixel-
+        // doubled, docs/boards.md); only the active size matters
+        m.standard = "frame buffer, shown pixel-doubled";
+        m.pixel_mhz = 0;
+        m.h_active = (name == "320x240") ? 320 : 64, m.h_fp = 1, m.h_sync = 1, m.h_bp = 1;
+        m.v_active = (name == "320x240") ? 240 : 48, m.v_fp = 1, m.v_sync = 1, m.v_bp = 1;
     } else {
         throw UsageError("unknown video mode '" + name + "' (640x480, 1280x720, 128x96)");
     }
     return m;
 }
 
-std::vector<std::string> video_mode_names() { return {"640x480", "1280x720", "128x96"}; }
+std::vector<std::string> video_mode_names() { return {"640x480", "1280x720", "128x96", "320x240", "64x48"}; }
 
 std::vector<unsigned> split_table(int k) {
     if (k < 1 || k > 64) throw UsageError("split table: k must be 1..64");
@@ -80,13 +87,15 @@ BoardScene make_board_scene(const std::string& mode, int k) {
         {200, 345, 100, 0.88, 0.66, 0.22, 0.10, 0.62, 0.70, 100},
         {440, 345, 100, 0.78, 0.78, 0.82, 0.10, 0.55, 0.80, 1000},
     };
-    const bool big = (mode == "1280x720"), small = (mode == "128x96");
+    // 1280 x 720: 1.5 times larger, centred (960 x 720 of 1280 x 720); 128 x 96: a fifth; the frame buffers
+    // 320 x 240 and 64 x 48: half of 640 x 480 and of 128 x 96
+    const bool big = (mode == "1280x720");
+    const int div = (mode == "128x96") ? 5 : (mode == "320x240") ? 2 : (mode == "64x48") ? 10 : 1;
     for (const Layout& b : base) {
         Sphere sp;
-        // 1280 x 720: 1.5 times larger, centred (960 x 720 of 1280 x 720); 128 x 96: a fifth
-        sp.cx = big ? 160 + b.cx * 3 / 2 : small ? b.cx / 5 : b.cx;
-        sp.cy = big ? b.cy * 3 / 2 : small ? b.cy / 5 : b.cy;
-        sp.r = big ? b.r * 3 / 2 : small ? b.r / 5 : b.r;
+        sp.cx = big ? 160 + b.cx * 3 / 2 : b.cx / div;
+        sp.cy = big ? b.cy * 3 / 2 : b.cy / div;
+        sp.r = big ? b.r * 3 / 2 : b.r / div;
         sp.color[0] = b.c0, sp.color[1] = b.c1, sp.color[2] = b.c2;
         sp.ka = b.ka, sp.kd = b.kd, sp.ks = b.ks, sp.n = b.n;
         s.spheres.push_back(sp);
@@ -165,11 +174,12 @@ std::vector<std::string> write_rtl_tables(const std::string& dir, const std::vec
         const Quant q = quantize(s);
         const VideoMode& m = s.mode;
         const std::string p = "`define BOARD" + std::to_string(m.h_active) + "_";
-        vh << "// " << m.standard << ", " << m.pixel_mhz << " MHz\n"
+        if (m.pixel_mhz > 0) vh << "// " << m.standard << ", " << m.pixel_mhz << " MHz\n"
            << p << "H_ACTIVE " << m.h_active << "\n" << p << "H_FP " << m.h_fp << "\n" << p << "H_SYNC " << m.h_sync
            << "\n" << p << "H_BP " << m.h_bp << "\n" << p << "V_ACTIVE " << m.v_active << "\n" << p << "V_FP "
            << m.v_fp << "\n" << p << "V_SYNC " << m.v_sync << "\n" << p << "V_BP " << m.v_bp << "\n" << p
            << "H_POL " << (m.h_pos ? 1 : 0) << "\n" << p << "V_POL " << (m.v_pos ? 1 : 0) << "\n";
+        else vh << "// frame buffer " << mode << ": tables only\n";
         std::ostringstream sc, ob, sh;
         sc << "// " << mode << ": {cx[10:0], cy[9:0], r2sq[17:0], r2[8:0]} per sphere (boardsim gen)\n";
         ob << "// " << mode << ": {ka[15:0], cd_r[8:0], cd_g[8:0], cd_b[8:0]} per sphere (boardsim gen)\n";

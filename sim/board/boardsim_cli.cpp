@@ -77,7 +77,7 @@ RunOptions parse_run(int argc, char** argv) {
     }
     video_mode(o.mode);   // throws for an unknown mode
     if (o.board == "icebreaker" && o.mode == "1280x720") throw UsageError("run: the icebreaker design has no 1280x720 mode");
-    o.split_k = (o.board == "icebreaker") ? 16 : 32;
+    o.split_k = (o.board == "icebreaker") ? 8 : 32;
     return o;
 }
 

@@ -10,14 +10,14 @@ namespace board {
 
 struct GenOptions {
     std::string out_dir;
-    std::vector<int> ks{16, 32};
+    std::vector<int> ks{8, 16, 32};
 };
 
 struct RunOptions {
     std::string board;             // icebreaker | ulx3s
     std::string mode;              // default: 640x480
     int frames = 2;                // 1..16
-    int split_k = 0;               // 0: the board's (icebreaker 16, ulx3s 32)
+    int split_k = 0;               // the board's: icebreaker 8, ulx3s 32
     std::string out_dir;           // PNGs and summary.json here ("" = none)
     bool quiet = false;
 };

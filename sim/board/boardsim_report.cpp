@@ -38,9 +38,15 @@ void print_run(const RunReport& r) {
                 static_cast<unsigned long long>(h.time_slots));
     std::printf("\nvideo timing (measured at the pins | %s):\n", r.mode.standard.c_str());
     for (const std::string& row : r.timing.rows) std::printf("  %s\n", row.c_str());
-    std::printf("\nrendering: longest line %d of %d clocks (%.0f %%), late flag %s\n", h.render_clocks_max,
-                h.render_clocks_budget, 100.0 * h.render_clocks_max / std::max(1, h.render_clocks_budget),
-                h.late ? "SET" : "clear");
+    if (h.frame_buffer) {
+        const double ms = h.render_clocks_max / (r.harness.pll_mhz * 2.0) * 1e-3;
+        std::printf("\nrendering into the frame buffer: longest frame %d clocks (%.1f ms, %.1f rendered frames/s), "
+                    "write-queue overflow %s\n", h.render_clocks_max, ms, 1e3 / ms, h.late ? "SET" : "clear");
+    } else {
+        std::printf("\nrendering: longest line %d of %d clocks (%.0f %%), late flag %s\n", h.render_clocks_max,
+                    h.render_clocks_budget, 100.0 * h.render_clocks_max / std::max(1, h.render_clocks_budget),
+                    h.late ? "SET" : "clear");
+    }
     if (r.opt.board == "ulx3s") {
         std::printf("TMDS: %llu characters decoded, %llu bad, largest running disparity %d, serializer %s\n",
                     static_cast<unsigned long long>(h.tmds_chars), static_cast<unsigned long long>(h.tmds_bad),
@@ -83,7 +89,8 @@ void write_run(const RunReport& r) {
       << m.h_fp << ", " << m.h_sync << ", " << m.h_bp << "], \"v\": [" << m.v_active << ", " << m.v_fp << ", "
       << m.v_sync << ", " << m.v_bp << "], \"pixel_mhz\": " << num(m.pixel_mhz, 5) << ", \"frame_us\": "
       << num(m.frame_us, 3) << ", \"refresh_hz\": " << num(m.refresh_hz, 4) << "},\n"
-      << "  \"render_clocks_max\": " << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
+      << "  \"frame_buffer\": " << (h.frame_buffer ? "true" : "false") << ",\n  \"render_clocks_max\": "
+      << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
       << h.render_clocks_budget << ",\n  \"late\": " << (h.late ? "true" : "false") << ",\n  \"tmds_bad\": "
       << h.tmds_bad << ",\n  \"tmds_max_disparity\": " << h.tmds_max_disparity << ",\n  \"failures\": [";
     for (size_t i = 0; i < r.failures.size(); ++i) o << (i ? ", " : "") << "\"" << r.failures[i] << "\"";

@@ -1,5 +1,7 @@
 // harness_icebreaker.cpp - the Verilated iCEBreaker top: 12 MHz in, the DVI Pmod's pins sampled at each
-// rising edge of its pixel clock pin (dvi_clk), which is what the Pmod's TFP410 does.
+// rising edge of its pixel clock pin (dvi_clk), which is what the Pmod's TFP410 does, with the green LED (it
+// changes with every rendered frame) as each sample's tag. It runs until `frames` frames have been rendered
+// and the displayed frame after the last of them is whole.
 #include <chrono>
 #include <memory>
 
@@ -25,7 +27,8 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
     top.eval();
     uint64_t k = 0;          // oscillator half periods: 12 MHz, edge k at k * 10^6 / 24 ps
     bool clk_prev = false;
-    const int want_changes = 2 * o.frames + 1;
+    int toggles = 0, stop_changes = -1;
+    bool led_prev = !top.LEDG_N;
     uint64_t stop_at = 0;
     while (ctx.time() < o.limit_ps) {
         const uint64_t tn = ((k + 1) * 1000000ull) / 24ull;
@@ -47,8 +50,11 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
             s.hs = top.dvi_hs;
             s.vs = top.dvi_vs;
             s.de = top.dvi_de;
+            s.tag = !top.LEDG_N;
             cap.push(s);
-            if (stop_at == 0 && cap.vsync_changes() >= want_changes) stop_at = cap.samples() + 4000;
+            if (s.tag != led_prev && ++toggles == o.frames) stop_changes = cap.vsync_changes() + 5;
+            led_prev = s.tag;
+            if (stop_at == 0 && stop_changes >= 0 && cap.vsync_changes() >= stop_changes) stop_at = cap.samples() + 4000;
             if (stop_at != 0 && cap.samples() >= stop_at) {
                 r.finished = true;
                 break;
@@ -58,7 +64,7 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
     }
     r.sim_ps = ctx.time();
     r.late = !top.LEDR_N;
-    r.render_clocks_max = int(top.rootp->icebreaker_top__DOT__u_core__DOT__render_clocks_max);
+    r.render_clocks_max = int(top.rootp->icebreaker_top__DOT__u_core__DOT__frame_clocks_max);
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     top.final();
 }
@@ -74,6 +80,7 @@ void icebreaker_models(std::vector<std::string>& out) {
 
 bool run_icebreaker(const HarnessOptions& o, VideoCapture& cap, HarnessResult& r) {
     r.pll_mhz = 12.0 * 67.0 / 16.0 / 2.0;   // icebreaker_prims.v: 50.25 MHz, a pixel every other clock
+    r.frame_buffer = true;
     // Verilator registers a model's scopes in the thread's current context: set it around construction
     auto ctx = std::make_unique<VerilatedContext>();
     Verilated::threadContextp(ctx.get());

@@ -35,6 +35,8 @@
 `define BOARD128_V_BP 4
 `define BOARD128_H_POL 0
 `define BOARD128_V_POL 0
+// frame buffer 320x240: tables only
+// frame buffer 64x48: tables only
 // the scene: spheres, light, background
 `define BOARD_N_OBJ 5
 `define BOARD_SIN_E 10531
