@@ -263,6 +263,7 @@ fuzz: deps deps-fuzz
 #                     video timing (build/board-sim/)
 #   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
 #   make flash BOARD=icebreaker|ulx3s [MODE=...]   program the board (iceprog / openFPGALoader)
+#   make board-split    the error against split points per chord (docs/data/board_split_*.json)
 #   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
 #   make lint-boards    verilator --lint-only -Wall on the board RTL
 BOARD ?=
@@ -271,18 +272,29 @@ FRAMES ?= 2
 BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
 CORE_RTL := $(RTL_CORE) $(RTL_SHADER)
 
-.PHONY: board-sim bitstream flash board-tables lint-boards check-board
+.PHONY: board-sim board-split bitstream flash board-tables lint-boards check-board
 
 check-board:
 	@case "$(BOARD)" in icebreaker|ulx3s) ;; *) echo "make: BOARD=icebreaker or BOARD=ulx3s"; exit 2;; esac
 
 board-sim: check-board build
 	$(call cmake_build,$(BUILD),--target boardsim)
-	@mkdir -p $(BUILD)/board-sim
+	@mkdir -p $(BUILD)/board-sim docs/data docs/img
 	$(BUILD)/boardsim run --board $(BOARD) --mode $(MODE) --frames $(FRAMES) --out-dir $(BUILD)/board-sim
+	cp $(BUILD)/board-sim/$(BOARD)_$(MODE)_summary.json docs/data/board_sim_$(BOARD)_$(MODE).json
+	cp $(BUILD)/board-sim/$(BOARD)_$(MODE)_frame0.png docs/img/board_$(BOARD)_$(MODE).png
+
+# The split study (docs/boards.md): error against the split points per chord, for both boards' scenes
+board-split: build
+	@mkdir -p docs/data
+	$(BUILD)/boardsim-quick split --mode 640x480 --shader rtl --k 1,4,8,16,32 --json docs/data/board_split_640x480.json
+	$(BUILD)/boardsim-quick split --mode 320x240 --shader rtl --k 1,4,8,16 --json docs/data/board_split_320x240.json
 
 bitstream: check-board build deps-synth
-	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom
+	@mkdir -p docs/data
+	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom; rc=$$?; \
+	  if [ -f $(BUILD)/board/$(BOARD)/summary.json ]; then \
+	    cp $(BUILD)/board/$(BOARD)/summary.json docs/data/bitstream_$(BOARD).json; fi; exit $$rc
 
 # The programmer for each board (Debian: fpga-icestorm's iceprog, openfpgaloader); not run by any test
 flash: check-board

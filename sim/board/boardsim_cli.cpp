@@ -21,6 +21,7 @@ const char* usage() {
            "  split   how much splitting spans at K points per chord helps: the largest error per sphere against\n"
            "          double precision, and the sub-spans per line, for each K\n"
            "          --mode M  --k K,K,... (1..64, default 1,4,8,16,32)  --shader host|rtl (default host)\n"
+           "          --json FILE  the table as JSON too\n"
            "  gen     the tables the RTL reads (boards/common/gen/): --out-dir DIR [--k K,K,...]\n"
            "  models  the board models this build has\n";
 }
@@ -89,6 +90,7 @@ SplitOptions parse_split(int argc, char** argv) {
         if (f == "--mode") o.mode = a.value(f);
         else if (f == "--k") o.ks = parse_ks(f, a.value(f));
         else if (f == "--shader") o.shader = a.value(f);
+        else if (f == "--json") o.json = a.value(f);
         else throw UsageError("split: unknown option " + f);
     }
     video_mode(o.mode);

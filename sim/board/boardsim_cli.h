@@ -27,6 +27,7 @@ struct SplitOptions {
     std::vector<int> ks{1, 4, 8, 16, 32};
     std::vector<unsigned> frames{0, 32, 64, 96, 128, 160, 192, 224};
     std::string shader = "host";   // host (double-precision setup, bit-exact core) | rtl (the RTL's pass)
+    std::string json;              // also write the table as JSON here
 };
 
 const char* usage();

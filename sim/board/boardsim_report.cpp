@@ -89,8 +89,13 @@ void write_run(const RunReport& r) {
       << m.h_fp << ", " << m.h_sync << ", " << m.h_bp << "], \"v\": [" << m.v_active << ", " << m.v_fp << ", "
       << m.v_sync << ", " << m.v_bp << "], \"pixel_mhz\": " << num(m.pixel_mhz, 5) << ", \"frame_us\": "
       << num(m.frame_us, 3) << ", \"refresh_hz\": " << num(m.refresh_hz, 4) << "},\n"
-      << "  \"frame_buffer\": " << (h.frame_buffer ? "true" : "false") << ",\n  \"render_clocks_max\": "
-      << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
+      << "  \"frame_buffer\": " << (h.frame_buffer ? "true" : "false") << ",\n  \"pll_pixel_mhz\": "
+      << num(h.pll_mhz, 4) << ",\n  \"sim_ms\": " << num(double(h.sim_ps) * 1e-9, 1) << ",\n  \"wall_s\": "
+      << num(h.wall_s, 1) << ",\n  \"render_percent\": "
+      << num(h.render_clocks_budget ? 100.0 * h.render_clocks_max / h.render_clocks_budget : 0.0, 1)
+      << ",\n  \"render_ms\": " << num(h.render_clocks_max / (h.pll_mhz * 2.0) * 1e-3, 2)
+      << ",\n  \"render_fps\": " << num(h.render_clocks_max ? h.pll_mhz * 2.0 * 1e6 / h.render_clocks_max : 0.0, 1)
+      << ",\n  \"render_clocks_max\": " << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
       << h.render_clocks_budget << ",\n  \"late\": " << (h.late ? "true" : "false") << ",\n  \"tmds_bad\": "
       << h.tmds_bad << ",\n  \"tmds_max_disparity\": " << h.tmds_max_disparity << ",\n  \"failures\": [";
     for (size_t i = 0; i < r.failures.size(); ++i) o << (i ? ", " : "") << "\"" << r.failures[i] << "\"";
@@ -117,6 +122,25 @@ void print_split(const SplitOptions& o, const std::vector<SplitRow>& rows) {
         for (size_t i = 0; i < r.max_err.size(); ++i) std::printf(" %d, %.3f |", r.max_err[i], r.mean_err[i]);
         std::printf(" %d | %.1f dB |\n", r.max_all, r.psnr);
     }
+    if (o.json.empty()) return;
+    std::ostringstream j;
+    j << "{\n  \"mode\": \"" << o.mode << "\",\n  \"shader\": \"" << o.shader << "\",\n  \"frames\": " << o.frames.size()
+      << ",\n  \"rows\": [\n";
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const SplitRow& r = rows[i];
+        j << "    {\"k\": " << r.k << ", \"spans_per_line\": " << num(r.spans_per_line, 1) << ", \"spans_max_line\": "
+          << r.spans_max_line << ", \"max\": " << r.max_all << ", \"psnr_db\": " << num(r.psnr, 1) << ", \"max_by_sphere\": [";
+        for (size_t q = 0; q < r.max_err.size(); ++q) j << (q ? ", " : "") << r.max_err[q];
+        j << "], \"mean_by_sphere\": [";
+        for (size_t q = 0; q < r.mean_err.size(); ++q) j << (q ? ", " : "") << num(r.mean_err[q], 3);
+        j << "]}" << (i + 1 < rows.size() ? "," : "") << "\n";
+    }
+    j << "  ]\n}\n";
+    render::write_atomic(o.json, [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << j.str();
+        if (!f.good()) throw std::runtime_error("cannot write " + o.json);
+    });
 }
 
 }  // namespace board
