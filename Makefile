@@ -67,7 +67,7 @@ build: deps configure
 ctest: build
 	cd $(BUILD) && ctest -j$(JOBS) --output-on-failure
 
-test: ctest lint
+test: ctest lint lint-boards
 	@echo "make test: all tests and lint passed"
 
 lint: deps
@@ -262,13 +262,14 @@ fuzz: deps deps-fuzz
 #                     the board's Verilated top for whole frames: PNGs, model and double-precision comparison,
 #                     video timing (build/board-sim/)
 #   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
-#   make flash BOARD=icebreaker|ulx3s [MODE=...]   program the board (iceprog / openFPGALoader)
+#   make flash BOARD=icebreaker|ulx3s [MODE=...] [DEVICE=85k]   program the board (iceprog / openFPGALoader)
 #   make board-split    the error against split points per chord (docs/data/board_split_*.json)
 #   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
 #   make lint-boards    verilator --lint-only -Wall on the board RTL
 BOARD ?=
 MODE ?= 640x480
 FRAMES ?= 2
+DEVICE ?= 85k
 BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
 CORE_RTL := $(RTL_CORE) $(RTL_SHADER)
 
@@ -298,8 +299,8 @@ bitstream: check-board build deps-synth
 
 # The programmer for each board (Debian: fpga-icestorm's iceprog, openfpgaloader); not run by any test
 flash: check-board
-	@if [ "$(BOARD)" = icebreaker ]; then f=$(BUILD)/board/icebreaker/icebreaker_640x480.bin; \
-	    cmd="iceprog $$f"; else f=$(BUILD)/board/ulx3s/ulx3s_$(MODE).bit; cmd="openFPGALoader -b ulx3s $$f"; fi; \
+	@if [ "$(BOARD)" = icebreaker ]; then f=$(BUILD)/board/icebreaker/icebreaker_640x480_up5k.bin; \
+	    cmd="iceprog $$f"; else f=$(BUILD)/board/ulx3s/ulx3s_$(MODE)_$(DEVICE).bit; cmd="openFPGALoader -b ulx3s $$f"; fi; \
 	  if [ ! -f "$$f" ]; then echo "make flash: $$f not found: run 'make bitstream BOARD=$(BOARD)' first"; exit 2; fi; \
 	  echo "$$cmd"; $$cmd
 

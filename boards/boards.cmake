@@ -95,7 +95,8 @@ verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vs
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
 verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
   VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
-target_sources(spec_tests PRIVATE tests/test_board_rtl.cpp tests/test_board_units.cpp tests/test_board_model.cpp)
+target_sources(spec_tests PRIVATE tests/test_board_rtl.cpp tests/test_board_units.cpp tests/test_board_model.cpp
+  tests/test_board_cli.cpp)
 target_link_libraries(spec_tests PRIVATE vboard_modules boardmodel)
 target_compile_definitions(spec_tests PRIVATE BOARDSIM_PATH="$<TARGET_FILE:boardsim-quick>")
 

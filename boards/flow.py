@@ -70,22 +70,25 @@ def count_cells(stat_text, patterns):
 BOARDS = {
     "icebreaker": {
         "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
+        "default_modes": ["640x480"], "devices": ["up5k"],
         "split_k": 8, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
         # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
         "freq_mhz": {"640x480": 50.25},
         "cells": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"],
                   "spram": [r"SB_SPRAM256KA"]},
-        "limits": {"lut": 5280, "bram": 30, "dsp": 8},
+        "limits": {"up5k": {"lut": 5280, "bram": 30, "dsp": 8}},
     },
     "ulx3s": {
         "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
+        "default_modes": ["640x480"], "devices": ["25k", "85k"],
         "split_k": 32, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
         "scene": {"640x480": "640x480", "1280x720": "1280x720"},
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
         "freq_mhz": {"640x480": 50.0, "1280x720": 74.29},
         "cells": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"]},
-        "limits": {"lut": 24288, "bram": 56, "dsp": 28},
+        "limits": {"25k": {"lut": 24288, "bram": 56, "dsp": 28}, "45k": {"lut": 43848, "bram": 108, "dsp": 72},
+                   "85k": {"lut": 83640, "bram": 208, "dsp": 156}},
     },
 }
 
@@ -117,7 +120,7 @@ def nextpnr_clocks(report):
     return out
 
 
-def build(board, mode, args, tools, out):
+def synthesize(board, mode, args, tools, out):
     d = BOARDS[board]
     rel = os.path.relpath(out, ROOT)
     name = "%s_%s" % (board, mode)
@@ -140,6 +143,24 @@ def build(board, mode, args, tools, out):
     stat_text = open(os.path.join(ROOT, stat)).read()
     for k, pats in d["cells"].items():
         res[k] = count_cells(stat_text, pats)
+    return res, net
+
+
+def place(board, mode, device, synth_res, net, args, tools, out):
+    d = BOARDS[board]
+    rel = os.path.relpath(out, ROOT)
+    name = "%s_%s_%s" % (board, mode, device)
+    res = dict(synth_res)
+    res["device"] = {"up5k": "iCE40UP5K-SG48", "25k": "LFE5U-25F-6BG381", "45k": "LFE5U-45F-6BG381",
+                     "85k": "LFE5U-85F-6BG381"}[device]
+    lim = d["limits"][device]
+    res["fits"] = all(res[k] <= v for k, v in lim.items())
+    res["clocks"] = []
+    res["timing_met"] = False
+    if not res["fits"]:
+        over = ["%s %d of %d" % (k, res[k], v) for k, v in lim.items() if res[k] > v]
+        res["note"] = "does not fit: " + ", ".join(over)
+        return res
     rep = "%s/%s.pnr.json" % (rel, name)
     if board == "icebreaker":
         asc = "%s/%s.asc" % (rel, name)
@@ -147,12 +168,13 @@ def build(board, mode, args, tools, out):
                                         "--json", net, "--asc", asc]
     else:
         cfg = "%s/%s.config" % (rel, name)
-        cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA381",
+        cmd = tools["nextpnr-ecp5"] + ["--" + device, "--speed", "6", "--package", "CABGA381",
                                        "--lpf", "boards/ulx3s/ulx3s.lpf", "--json", net, "--textcfg", cfg]
     cmd += ["--report", rep, "--seed", str(args.seed), "--timing-allow-fail", "--freq", str(d["freq_mhz"][mode])]
     rc, res["pnr_s"] = run(cmd, "%s/%s.nextpnr.log" % (rel, name))
     if rc != 0 or not os.path.exists(os.path.join(ROOT, rep)):
-        fail("nextpnr failed for %s (see %s/%s.nextpnr.log)" % (name, rel, name), 1)
+        res["note"] = "nextpnr failed (%s/%s.nextpnr.log)" % (rel, name)
+        return res
     r = json.load(open(os.path.join(ROOT, rep)))
     res["clocks"] = nextpnr_clocks(r)
     res["utilization"] = {k: v for k, v in r.get("utilization", {}).items() if v.get("used", 0)}
@@ -167,11 +189,8 @@ def build(board, mode, args, tools, out):
     else:
         bit = "%s/%s.bit" % (rel, name)
         rc, _ = run(tools["ecppack"] + [cfg, bit], "%s/%s.ecppack.log" % (rel, name))
-    if rc != 0 or not os.path.exists(os.path.join(ROOT, bit)):
-        fail("the bitstream packer failed for %s" % name, 1)
-    res["bitstream"] = bit
-    lim = d["limits"]
-    res["fits"] = all(res[k] <= v for k, v in lim.items())
+    if rc == 0 and os.path.exists(os.path.join(ROOT, bit)):
+        res["bitstream"] = bit
     res["timing_met"] = bool(res["clocks"]) and all(c["met"] for c in res["clocks"])
     return res
 
@@ -185,7 +204,7 @@ def main():
     args = ap.parse_args()
     if args.board not in BOARDS:
         fail("--board must be icebreaker or ulx3s, not '%s'" % args.board)
-    modes = args.modes.split(",") if args.modes else BOARDS[args.board]["modes"]
+    modes = args.modes.split(",") if args.modes else BOARDS[args.board]["default_modes"]
     for m in modes:
         if m not in BOARDS[args.board]["modes"]:
             fail("%s has no mode '%s' (%s)" % (args.board, m, ", ".join(BOARDS[args.board]["modes"])))
@@ -205,24 +224,30 @@ def main():
     os.makedirs(out, exist_ok=True)
     results = []
     for m in modes:
-        print("flow: %s %s ..." % (args.board, m), flush=True)
-        results.append(build(args.board, m, args, tools, out))
+        print("flow: %s %s: synthesis ..." % (args.board, m), flush=True)
+        sres, net = synthesize(args.board, m, args, tools, out)
+        for dev in BOARDS[args.board]["devices"]:
+            print("flow: %s %s: place and route on %s ..." % (args.board, m, dev), flush=True)
+            results.append(place(args.board, m, dev, sres, net, args, tools, out))
     summary = {"board": args.board, "seed": args.seed, "designs": results}
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=2)
-    print("\n| board | mode | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("\n| board | mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
+        lead = "| %s | %s | %s | %d | %d | %d | %d |" % (args.board, r["mode"], r["device"], r["lut"], r["ff"],
+                                                         r["bram"], r["dsp"])
+        if not r["clocks"]:
+            print("%s %s | | | no |" % (lead, r.get("note", "")))
         for i, c in enumerate(r["clocks"]):
-            lead = ("| %s | %s | %d | %d | %d | %d |" % (args.board, r["mode"], r["lut"], r["ff"], r["bram"], r["dsp"])
-                    if i == 0 else "| | | | | | |")
-            print("%s %s | %.2f | %.2f | %s |" % (lead, c["net"], c["constraint_mhz"], c["fmax_mhz"],
-                                                   "yes" if c["met"] else "NO"))
+            print("%s %s | %.2f | %.2f | %s |" % (lead if i == 0 else "| | | | | | | |", c["net"], c["constraint_mhz"],
+                                                   c["fmax_mhz"], "yes" if c["met"] else "NO"))
         if "icetime_mhz" in r:
-            print("| | | | | | | icetime (whole design) | | %s | |" % r["icetime_mhz"])
-        print("bitstream: %s" % r["bitstream"])
-    if not all(r["timing_met"] and r["fits"] for r in results):
-        fail("timing not met or the design does not fit (see above)", 1)
+            print("| | | | | | | | icetime (whole design) | | %s | |" % r["icetime_mhz"])
+        if "bitstream" in r:
+            print("bitstream: %s" % r["bitstream"])
+    if not any(r["timing_met"] and r["fits"] and "bitstream" in r for r in results):
+        fail("no bitstream with timing met (see above)", 1)
 
 
 if __name__ == "__main__":

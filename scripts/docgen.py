@@ -387,7 +387,44 @@ def block_coverage(f):
     return "\n".join(out)
 
 
+# ---- the reference designs on boards (issue 15, docs/boards.md): make board-split, make bitstream -------------
+def block_board_split(f):
+    out = []
+    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (iCEBreaker)")):
+        d = f.data(name)
+        out.append("%s, %d frames:" % (label, d["frames"]))
+        out.append("")
+        out.append("| K | sub-spans a line (mean, most) | n = 1 | n = 3 | n = 10 | n = 100 | n = 1000 | largest | worst PSNR |")
+        out.append("|" + "---|" * 9)
+        for r in d["rows"]:
+            out.append("| %d | %.1f, %d | %s | %d | %.1f dB |" % (r["k"], r["spans_per_line"], r["spans_max_line"],
+                       " | ".join(str(v) for v in r["max_by_sphere"]), r["max"], r["psnr_db"]))
+        out.append("")
+    return "\n".join(out[:-1])
+
+
+def block_board_bitstream(board):
+    def make(f):
+        d = f.data("bitstream_" + board)
+        out = ["| mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |",
+               "|" + "---|" * 10]
+        for r in d["designs"]:
+            for i, c in enumerate(r["clocks"]):
+                lead = ("| %s | %s | %d | %d | %d | %d |" % (r["mode"], r.get("device", ""), r["lut"], r["ff"], r["bram"],
+                                                            r["dsp"]) if i == 0 else "| | | | | | |")
+                out.append("%s %s | %.2f | %.2f | %s |" % (lead, c["net"].replace("$glbnet$", ""), c["constraint_mhz"],
+                                                         c["fmax_mhz"], "yes" if c["met"] else "no"))
+            if not r["clocks"]:
+                out.append("| %s | %s | %d | %d | %d | %d | %s | | | no |" % (r["mode"], r.get("device", ""), r["lut"],
+                                                                             r["ff"], r["bram"], r["dsp"], r.get("note", "")))
+        return "\n".join(out)
+    return make
+
+
 BLOCKS = {
+    "board_split": block_board_split,
+    "board_bitstream_ulx3s": block_board_bitstream("ulx3s"),
+    "board_bitstream_icebreaker": block_board_bitstream("icebreaker"),
     "formal-steps": block_formal_steps,
     "formal-mutants": block_formal_mutants,
     "coverage": block_coverage,
