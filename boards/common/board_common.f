@@ -11,6 +11,7 @@ boards/common/sync_fifo.v
 boards/common/board_shader.v
 boards/common/shade_passes.v
 boards/common/compose.v
+boards/common/compose_seq.v
 boards/common/line_buffer.v
 boards/common/board_core.v
 boards/common/frame_store.v

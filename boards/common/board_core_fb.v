@@ -102,8 +102,7 @@ module board_core_fb #(
     wire [X_W-1:0] sp_x0;
     wire [9:0] sp_l;
     wire [47:0] sp_n1, sp_n2;
-    reg [9:0] outstanding;
-    wire wr_valid, wr_last;
+    reg [9:0] outstanding;             // sub-spans taken by the shader whose last pixel is not yet queued
     wire cmd_ready, cmd_ready_fs;
     reg clr_push;
     wire beam_past = !in_start || ({1'b0, v} >= y2p2);
@@ -173,13 +172,8 @@ module board_core_fb #(
         .s_n2(sp_n2), .l_x(l_x), .l_y(l_y), .l_z(l_z), .h_x(h_x), .h_y(h_y), .h_z(h_z),
         .m_valid(px_valid), .m_obj(px_obj), .m_x(px_x), .m_dif(px_dif), .m_spc(px_spc), .m_last(px_last)
     );
-    wire [X_W-1:0] wr_x;
-    wire [11:0] wr_rgb;
-    compose #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .OUT_BITS(4), .OBJ_FILE(OBJ_FILE)) u_compose (
-        .clk(clk), .rst_n(rst_n), .in_valid(px_valid), .in_obj(px_obj), .in_x(px_x), .in_dif(px_dif),
-        .in_spc(px_spc), .in_last(px_last), .out_valid(wr_valid), .out_last(wr_last), .out_x(wr_x),
-        .out_rgb(wr_rgb)
-    );
+    // the colour is made after the write queue, one channel at a time (compose_seq: no multiplier), at the
+    // frame store's pace; the queue holds the shader's pixels
     // for the board simulation's report: the longest time a frame took to render, in clocks (synthesis
     // removes it: nothing reads it)
     reg [25:0] frame_clocks, frame_clocks_max /*verilator public_flat_rd*/;
@@ -197,25 +191,35 @@ module board_core_fb #(
     end
     always @(posedge clk) begin
         if (!rst_n) outstanding <= 10'd0;
-        else outstanding <= outstanding + {9'd0, sp_valid & sp_ready} - {9'd0, wr_valid & wr_last};
+        else outstanding <= outstanding + {9'd0, sp_valid & sp_ready} - {9'd0, px_valid & px_last};
     end
 
-    // ---- write queue: the line's clear, then its pixels, in order ----------------------------------------------
-    localparam CMD_W = 1 + P_W + 12;
-    wire q_ready, c_valid;
+    // ---- write queue: the line's clear, then its pixels, in order; the colour; the frame store ----------------
+    localparam CMD_W = 1 + P_W + OBJ_W + 32;
+    wire q_ready, c_valid, c_ready, w_valid, w_clear;
     wire [CMD_W-1:0] c_data;
-    wire [P_W-1:0] wr_pixel = line_base + {{(P_W - X_W) {1'b0}}, wr_x};
-    wire q_push = clr_push | wr_valid;
+    wire [P_W-1:0] w_arg;
+    wire [11:0] w_rgb;
+    wire [P_W-1:0] wr_pixel = line_base + {{(P_W - X_W) {1'b0}}, px_x};
+    wire q_push = clr_push | px_valid;
     sync_fifo #(.W(CMD_W), .AW(8)) u_queue (
         .clk(clk), .rst_n(rst_n), .s_valid(q_push), .s_ready(q_ready),
-        .s_data(clr_push ? {1'b1, {(P_W - Y_W) {1'b0}}, y, 12'd0} : {1'b0, wr_pixel, wr_rgb}),
-        .m_valid(c_valid), .m_ready(cmd_ready_fs), .m_data(c_data)
+        .s_data(clr_push ? {1'b1, {(P_W - Y_W) {1'b0}}, y, {(OBJ_W + 32) {1'b0}}}
+                         : {1'b0, wr_pixel, px_obj, px_dif, px_spc}),
+        .m_valid(c_valid), .m_ready(c_ready), .m_data(c_data)
     );
     always @(posedge clk) begin
         if (!rst_n) error <= 1'b0;
         else if (q_push && !q_ready) error <= 1'b1;
     end
     assign cmd_ready = q_ready;
+    compose_seq #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .OUT_BITS(4), .TAG_W(P_W), .MUL_STEPS(3), .OBJ_FILE(OBJ_FILE))
+    u_compose (
+        .clk(clk), .rst_n(rst_n), .s_valid(c_valid), .s_ready(c_ready), .s_bypass(c_data[CMD_W-1]),
+        .s_tag(c_data[OBJ_W + 32 +: P_W]), .s_obj(c_data[32 +: OBJ_W]), .s_dif(c_data[31:16]),
+        .s_spc(c_data[15:0]), .m_valid(w_valid), .m_ready(cmd_ready_fs), .m_bypass(w_clear), .m_tag(w_arg),
+        .m_rgb(w_rgb)
+    );
 
     // ---- frame store and scanout ---------------------------------------------------------------------------
     reg fetch;
@@ -223,19 +227,29 @@ module board_core_fb #(
     wire fetch_busy, group_valid;
     wire [47:0] group;
     frame_store #(.FB_W(FB_W), .FB_H(FB_H), .P_W(P_W), .BG_RGB(BG_RGB)) u_store (
-        .clk(clk), .rst_n(rst_n), .cmd_valid(c_valid), .cmd_ready(cmd_ready_fs), .cmd_clear(c_data[CMD_W-1]),
-        .cmd_arg(c_data[12 +: P_W]), .cmd_rgb(c_data[11:0]), .fetch(fetch), .fetch_group(fetch_group),
+        .clk(clk), .rst_n(rst_n), .cmd_valid(w_valid), .cmd_ready(cmd_ready_fs), .cmd_clear(w_clear),
+        .cmd_arg(w_arg), .cmd_rgb(w_rgb), .fetch(fetch), .fetch_group(fetch_group),
         .fetch_busy(fetch_busy), .group(group), .group_valid(group_valid)
     );
     // the buffer lines of this display line and the next, as word offsets (registered in two steps from v,
     // which is stable through a line)
     reg [Y_W-1:0] next_line;
     reg [P_W-3:0] base_cur, base_next;
+    // line * GW by shifts and adds over GW's set bits (a constant: no multiplier, no DSP)
+    function [P_W-3:0] times_gw;
+        input [Y_W-1:0] line;
+        integer b;
+        begin
+            times_gw = {(P_W - 2) {1'b0}};
+            for (b = 0; b < P_W - 2; b = b + 1)
+                if (GW[b]) times_gw = times_gw + ({{(P_W - 2 - Y_W) {1'b0}}, line} << b);
+        end
+    endfunction
     reg next_active;                   // the next display line shows the buffer
     always @(posedge clk) begin
         next_line <= (v >= V_ACTIVE[Y_W-1:0] - 1'b1) ? {Y_W{1'b0}} : (v + 1'b1) >> 1;
-        base_cur <= {{(P_W - 2 - Y_W) {1'b0}}, 1'b0, v[Y_W-1:1]} * GW[P_W-3:0];
-        base_next <= {{(P_W - 2 - Y_W) {1'b0}}, next_line} * GW[P_W-3:0];
+        base_cur <= times_gw({1'b0, v[Y_W-1:1]});
+        base_next <= times_gw(next_line);
         next_active <= (v < V_ACTIVE[Y_W-1:0] - 1'b1) || (v == V_TOTAL[Y_W-1:0] - 1'b1);
     end
     reg [47:0] cur, nxt;

@@ -82,7 +82,17 @@ module frame_store #(
     assign cmd_ready = !w_busy;
     localparam L_W = $clog2(FB_H);
     localparam [A_W-1:0] GW_A = GW[A_W-1:0];
-    wire [A_W-1:0] line_word0 = {{(A_W - L_W) {1'b0}}, cmd_arg[L_W-1:0]} * GW_A;
+    // the line's first word: line * GW by shifts and adds over GW's set bits (a constant: no DSP)
+    function [A_W-1:0] times_gw;
+        input [L_W-1:0] line;
+        integer b;
+        begin
+            times_gw = {A_W{1'b0}};
+            for (b = 0; b < A_W; b = b + 1)
+                if (GW_A[b]) times_gw = times_gw + ({{(A_W - L_W) {1'b0}}, line} << b);
+        end
+    endfunction
+    wire [A_W-1:0] line_word0 = times_gw(cmd_arg[L_W-1:0]);
     wire [3:0] w_color = (w_plane == 2'd0) ? w_rgb[11:8] : (w_plane == 2'd1) ? w_rgb[7:4] : w_rgb[3:0];
     wire [3:0] bg_color = (w_plane == 2'd0) ? BG_RGB[11:8] : (w_plane == 2'd1) ? BG_RGB[7:4] : BG_RGB[3:0];
     wire [A_W-1:0] plane_base = (w_plane == 2'd0) ? {A_W{1'b0}} : (w_plane == 2'd1) ? PLANE[A_W-1:0] :
