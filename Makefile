@@ -293,7 +293,7 @@ board-split: build
 
 bitstream: check-board build deps-synth
 	@mkdir -p docs/data
-	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom; rc=$$?; \
+	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom $(if $(filter icebreaker,$(BOARD)),--breakdown); rc=$$?; \
 	  if [ -f $(BUILD)/board/$(BOARD)/summary.json ]; then \
 	    cp $(BUILD)/board/$(BOARD)/summary.json docs/data/bitstream_$(BOARD).json; fi; exit $$rc
 

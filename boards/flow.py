@@ -11,7 +11,11 @@ Writes build/board/<board>/: the bitstream(s), the logs, nextpnr's reports and s
 timing_met, ...}]}), and prints a table. Exit 0 when every bitstream was written with timing met, 1 when
 timing fails, 2 for bad input or a missing tool.
 
+With --breakdown, a second synthesis keeps the hierarchy and each design's "breakdown" gives the cells of the
+shader's parts and of each board module (their subtrees), to show where a design that does not fit spends them.
+
 Usage: boards/flow.py --board icebreaker|ulx3s [--modes 640x480,1280x720] [--seed N] [--specrom build/specrom]
+                      [--breakdown]
 """
 import argparse
 import json
@@ -111,6 +115,57 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
             % (GEN, " ".join(files), chp, d["top"], synth, stat_out))
 
 
+# Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
+# its subtree. Blocks: the shader's parts and the board's modules; the rest is the top's glue.
+BLOCKS = [("spec_setup (small engine)", "spec_setup"), ("spec_stream", "spec_stream"),
+          ("spec_shader glue", "spec_shader"), ("sphere_spans", "sphere_spans"), ("light_gen", "light_gen"),
+          ("shade_passes", "shade_passes"), ("compose", "compose"), ("compose_seq", "compose_seq"),
+          ("frame_store", "frame_store"), ("line_buffer", "line_buffer"), ("video_timing", "video_timing"),
+          ("tmds", "tmds_encoder"), ("sync_fifo", "sync_fifo")]
+
+
+def breakdown(stat_text, cells):
+    """Per block of BLOCKS: its subtree's cells (lut, ff, carry, dsp, bram), from a -noflatten stat."""
+    own, order = {}, []
+    for part in stat_text.split("=== ")[1:]:
+        name = part.split(" ===")[0].strip()
+        if name == "design hierarchy":
+            tree = part
+            continue
+        own[name] = {k: count_cells("=== " + part, pats) for k, pats in dict(cells, carry=[r"SB_CARRY|CCU2C"]).items()}
+    # the hierarchy: indentation gives the tree
+    stack, parent = [], {}
+    for line in tree.splitlines():
+        m = re.match(r"^(\s+)(\S+)\s+\d+\s*$", line)
+        if not m or m.group(2) not in own:
+            continue
+        depth = len(m.group(1))
+        while stack and stack[-1][0] >= depth:
+            stack.pop()
+        parent[m.group(2)] = stack[-1][1] if stack else None
+        stack.append((depth, m.group(2)))
+
+    def base(n):
+        return n.split("\\")[-1].split("$")[0] if "\\" in n else n
+
+    def block_of(n):
+        # the nearest block among itself and its ancestors
+        cur = n
+        while cur is not None:
+            if base(cur) in [b for _, b in BLOCKS]:
+                return base(cur)
+            cur = parent.get(cur)
+        return "board glue (top, board_core, PLL, I/O)"
+    out = {}
+    for n, c in own.items():
+        b = block_of(n)
+        label = next((lab for lab, bb in BLOCKS if bb == b), b)
+        t = out.setdefault(label, {k: 0 for k in c})
+        for k, v in c.items():
+            t[k] += v
+    return out
+
+
 def nextpnr_clocks(report):
     out = []
     for net, v in sorted(report.get("fmax", {}).items()):
@@ -143,6 +198,13 @@ def synthesize(board, mode, args, tools, out):
     stat_text = open(os.path.join(ROOT, stat)).read()
     for k, pats in d["cells"].items():
         res[k] = count_cells(stat_text, pats)
+    if args.breakdown:
+        hstat = "%s/%s.hier.stat" % (rel, name)
+        hier = synth.replace(" -json %s" % net, "") + " -noflatten"
+        rc, _ = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, hstat, hier)],
+                    "%s/%s.hier.yosys.log" % (rel, name))
+        if rc == 0:
+            res["breakdown"] = breakdown(open(os.path.join(ROOT, hstat)).read(), d["cells"])
     return res, net
 
 
@@ -201,6 +263,8 @@ def main():
     ap.add_argument("--modes", default="")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
+    ap.add_argument("--breakdown", action="store_true",
+                    help="also synthesize with the hierarchy kept and record each block's cells (breakdown)")
     args = ap.parse_args()
     if args.board not in BOARDS:
         fail("--board must be icebreaker or ulx3s, not '%s'" % args.board)

@@ -421,8 +421,29 @@ def block_board_bitstream(board):
     return make
 
 
+def block_board_breakdown(board):
+    def make(f):
+        d = f.data("bitstream_" + board)
+        out = []
+        for r in d["designs"]:
+            b = r.get("breakdown")
+            if not b or any(o is r for o in out):
+                continue
+            out.append("| block (with its submodules) | LUT | FF | carry | BRAM | DSP |")
+            out.append("|" + "---|" * 6)
+            for name, c in sorted(b.items(), key=lambda kv: -kv[1]["lut"]):
+                out.append("| %s | %d | %d | %d | %d | %d |" % (name, c["lut"], c["ff"], c["carry"], c["bram"], c["dsp"]))
+            tot = {k: sum(c[k] for c in b.values()) for k in ("lut", "ff", "carry", "bram", "dsp")}
+            out.append("| all (hierarchy kept) | %d | %d | %d | %d | %d |" % (tot["lut"], tot["ff"], tot["carry"], tot["bram"],
+                                                                          tot["dsp"]))
+            break
+        return "\n".join(out)
+    return make
+
+
 BLOCKS = {
     "board_split": block_board_split,
+    "board_breakdown_icebreaker": block_board_breakdown("icebreaker"),
     "board_bitstream_ulx3s": block_board_bitstream("ulx3s"),
     "board_bitstream_icebreaker": block_board_bitstream("icebreaker"),
     "formal-steps": block_formal_steps,
