@@ -27,6 +27,8 @@
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
+#   make test-mutants  each strengthened test against a deliberately broken copy of the tree: it must fail
+#               (tests/mutants.py, build-mutants; about 20 minutes on 2 cores the first time)
 BUILD ?= build
 JOBS ?= 2
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
@@ -40,8 +42,8 @@ RTL_SHADER_TOPS := $(basename $(notdir $(RTL_SHADER)))
 RTL_OTHER := $(filter-out $(RTL_CORE) $(RTL_SHADER),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage test-long \
-        test-asan fuzz deps-fuzz compare tables methods
+        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage \
+        test-long test-asan test-mutants fuzz deps-fuzz compare tables methods
 
 all: build
 
@@ -116,7 +118,7 @@ fig8: build
 	$(BUILD)/specsim fig8
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz
+	rm -rf $(BUILD) $(BUILD)-cov $(BUILD)-asan $(BUILD)-fuzz $(BUILD)-mutants
 
 # Regenerate the documents made from simulation and every number marked in README.md and docs/*.md
 # (scripts/docgen.py; the ctests docs_current and docs_*timing_matches_simulation check them)
@@ -238,15 +240,21 @@ coverage: deps
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
-	SPEC_LONG_PIXELS=$(LONG_PIXELS) $(BUILD)/spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_JSON=$(if $(filter 100000000,$(LONG_PIXELS)),docs/data/test_long.json) \
+	    $(BUILD)/spec_long
 
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
 	    "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined"
 	$(call cmake_build,$(BUILD)-asan)
 	cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	    ctest -j$(JOBS) --output-on-failure
 	@echo "make test-asan: every test passed under AddressSanitizer and UndefinedBehaviorSanitizer"
+
+# The strengthened tests fail on broken copies: one mutant each (tests/mutants.py, docs/verification.md)
+test-mutants: deps
+	python3 tests/mutants.py --src . --work $(BUILD)-mutants --jobs $(JOBS)
 
 deps-fuzz:
 	@scripts/deps.sh clang libclang-rt-14-dev

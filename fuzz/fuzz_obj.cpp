@@ -1,6 +1,7 @@
 // fuzz_obj - the renderer's OBJ reader (sim/render/mesh.h, load_obj, through tinyobjloader) on any file
-// contents. Promise: a mesh of triangles with finite positions, unit-length finite normals and indices in
-// range, or an InputError with a one-line message (specsim render --obj: exit 2); no other exception.
+// contents. Promise: a mesh of triangles (polygons triangulated, polygon.h) with finite positions, unit-length
+// finite normals (computed where the file has none or an unusable one) and indices in range, or an InputError
+// with a one-line message (specsim render --obj: exit 2); no other exception.
 #include <unistd.h>
 
 #include <cmath>

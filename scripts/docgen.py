@@ -200,6 +200,12 @@ def walk(obj, parts, key):
     return obj
 
 
+def bad_input_rows():
+    sys.path.insert(0, os.path.join(ROOT, "tests"))
+    import bad_input
+    return sum(1 for l in open(os.path.join(ROOT, "docs", "bad-input.md")) if bad_input.ROW.match(l.rstrip("\n")))
+
+
 def q_below_from(f, limit):
     """The smallest n0 with q(n) <= limit for every n0 <= n <= 1000."""
     q = f.fig8_all()[0]
@@ -217,6 +223,21 @@ CALC = {
     "q06_from": lambda f: q_below_from(f, 0.6),
     # pixel i of spec_unit, cycles after Start: FIRST + 2i; busy_o from t+1 to t+FIRST+2l
     "unit_busy_end_plus1": lambda f: f.header("default")["UNIT_FIRST_PIXEL"] + 1,
+    # the verification summary (docs/verification.md) from the JSON the slow targets write
+    "formal_minutes": lambda f: sum(r["seconds"] for r in f.data("formal")["steps"]) / 60.0,
+    "formal_proofs": lambda f: sum(1 for r in f.data("formal")["steps"] if r["step"] == "induction"),
+    "formal_covers": lambda f: sum(r["covers"] or 0 for r in f.data("formal")["steps"] if r["step"] == "cover"),
+    "formal_all_pass": lambda f: all(r["pass"] for r in f.data("formal")["steps"]),
+    "formal_bugs": lambda f: sum(1 for m in f.data("formal_mutants")["mutants"] if m["expected"]),
+    "formal_equivalents": lambda f: sum(1 for m in f.data("formal_mutants")["mutants"] if not m["expected"]),
+    "coverage_line_min": lambda f: min(100.0 * v["line"][0] / v["line"][1]
+                                       for v in f.data("coverage")["files"].values() if v["line"][1]),
+    "coverage_toggle_all": lambda f: 100.0 * f.data("coverage")["all"]["toggle"][0] /
+    f.data("coverage")["all"]["toggle"][1],
+    "long_pixels": lambda f: sum(r["pixels"] for r in f.data("test_long")["runs"]),
+    "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
+    # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
+    "bad_input_rows": lambda f: bad_input_rows(),
 }
 
 
@@ -441,11 +462,49 @@ def block_board_breakdown(board):
     return make
 
 
+def block_test_mutants(f):
+    """The table of tests/mutants.py's mutants with make test-mutants' results (docs/data/mutants.json)."""
+    sys.path.insert(0, os.path.join(ROOT, "tests"))
+    import mutants
+    d = f.data("mutants")
+
+    def code(t):
+        return "`%s`" % t.replace("|", "\\|")
+    out = ["| mutant | the change | what it stands for | test that must fail | still passes (the old, weaker check) "
+           "| result |", "|---|---|---|---|---|---|"]
+    for m in mutants.MUTANTS:
+        if m["name"] not in d["results"]:
+            raise DocError("mutant %s has no result in docs/data/mutants.json: run make test-mutants" % m["name"])
+        still = ", ".join(code(mutants.test_label(c)) for c in m["passes"]) or "-"
+        out.append("| %s | `%s`: %s → %s | %s | %s | %s | %s |" % (
+            m["name"], m["file"], code(m["old"]), code(m["new"]), m["why"], code(mutants.test_label(m["cmd"])),
+            still, d["results"][m["name"]]))
+    return "\n".join(out)
+
+
+def block_test_long(f):
+    """make test-long's table (docs/data/test_long.json, written by spec_long with the default pixel count)."""
+    d = f.data("test_long")
+
+    def num(v):
+        return "{:,}".format(v).replace(",", " ")
+    out = ["Result of `make test-long` (seed %d, %d s):" % (d["seed"], d["seconds"]), "",
+           "| core | pixels checked | spans | cycles | resets / inits | other |", "|---|---|---|---|---|---|"]
+    for r in d["runs"]:
+        other = re.sub(r"\d{4,}", lambda m: num(int(m.group(0))), r["other"])
+        events = re.sub(r"\d{4,}", lambda m: num(int(m.group(0))), r["events"])
+        out.append("| %s | %s | %s | %s | %s | %s |" % (r["core"], num(r["pixels"]), num(r["spans"]), num(r["cycles"]),
+                                                     events, other))
+    return "\n".join(out)
+
+
 BLOCKS = {
     "board_split": block_board_split,
     "board_breakdown_icebreaker": block_board_breakdown("icebreaker"),
     "board_bitstream_ulx3s": block_board_bitstream("ulx3s"),
     "board_bitstream_icebreaker": block_board_bitstream("icebreaker"),
+    "test-long": block_test_long,
+    "test-mutants": block_test_mutants,
     "formal-steps": block_formal_steps,
     "formal-mutants": block_formal_mutants,
     "coverage": block_coverage,

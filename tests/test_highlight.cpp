@@ -2,8 +2,6 @@
 // relies on, and culling in the renderer (no pixel may change). Also the three subcommands as a user runs
 // them (tables printed, bad input: one line on stderr, exit 2).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +14,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "common.h"
 #include "highlight.h"
 #include "raster.h"
 #include "scene.h"
@@ -24,6 +23,8 @@
 
 using namespace spec;
 using namespace spec::methods;
+using spec::test::CliRun;
+using spec::test::specsim;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -57,28 +58,6 @@ void weights(std::mt19937_64& rng, double w[3]) {
 
 double angle(const Vec& a, const Vec& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
 
-struct CliRun {
-    int code;
-    std::string out, err;
-};
-
-CliRun specsim(const std::string& args) {
-    const std::string ef = ::testing::TempDir() + "/methods_err." + std::to_string(getpid()) + ".txt";
-    const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + ef + " </dev/null";
-    CliRun r;
-    FILE* p = popen(cmd.c_str(), "r");
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, k);
-    const int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::ifstream e(ef);
-    std::stringstream ss;
-    ss << e.rdbuf();
-    r.err = ss.str();
-    std::remove(ef.c_str());
-    return r;
-}
 }  // namespace
 
 // The exact test against solving H = a NA + b NB + c NC: inside iff a, b, c >= 0.

@@ -11,10 +11,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "Vspec_stream.h"
 #include "Vspec_stream_tuned.h"
@@ -23,11 +25,13 @@
 #include "Vspec_unit_tuned.h"
 #include "analysis.h"
 #include "cli.h"
+#include "common.h"
 #include "spec_model.h"
 #include "stream_driver.h"
 #include "unit_driver.h"
 
 using namespace spec;
+using spec::test::random_stream_span;
 
 namespace {
 uint64_t env_u64(const char* name, uint64_t dflt) {
@@ -43,29 +47,53 @@ uint64_t env_u64(const char* name, uint64_t dflt) {
 const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
 const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
 
-// A random span as a host would send it (angles inside the format, often short, sometimes long), or with
-// raw register contents (angles that saturate, any step) one time in sixteen.
-SpanRegs random_span(std::mt19937_64& rng, const Model& m, uint32_t max_len) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    SpanRegs r;
-    r.n = static_cast<uint32_t>(rng() % 1024);
-    r.c = static_cast<uint32_t>(rng() & 0xffff);
-    switch (rng() % 8) {
-        case 0: case 1: r.len = 0; break;
-        case 2: case 3: r.len = static_cast<uint32_t>(rng() % 4); break;
-        case 7: r.len = static_cast<uint32_t>(rng() % (4 * max_len + 1)); break;
-        default: r.len = static_cast<uint32_t>(rng() % (max_len + 1)); break;
-    }
-    r.len = std::min<uint32_t>(r.len, 0xffff);   // the length field's 16 bits
-    const double reach = std::min(M_PI, 6.0 * epicentre_end(r.n));
-    r.zeta0 = m.quantize_angle(reach * u(rng));
-    r.dzeta = m.quantize_angle(r.len ? (reach * u(rng) - m.angle_value(r.zeta0)) / r.len : 0.0);
-    if (rng() % 16 == 0) {
-        r.zeta0 = static_cast<int32_t>(rng());
-        r.dzeta = static_cast<int32_t>(rng()) >> (rng() % 32);
-    }
+
+// What each run checked, for SPEC_LONG_JSON (make test-long writes docs/data/test_long.json, the table of
+// docs/verification.md through scripts/docgen.py).
+struct RunRow {
+    std::string core;
+    uint64_t pixels, spans, cycles;
+    std::string events, other;
+};
+std::vector<RunRow>& rows() {
+    static std::vector<RunRow> r;
     return r;
 }
+std::string count(uint64_t v, const char* what) { return std::to_string(v) + " " + what; }
+
+class ReportOnExit : public ::testing::Environment {
+public:
+    void SetUp() override { t0_ = std::chrono::steady_clock::now(); }
+    void TearDown() override {
+        const char* path = std::getenv("SPEC_LONG_JSON");
+        if (!path || !*path) return;
+        if (!::testing::UnitTest::GetInstance()->Passed()) {
+            std::fprintf(stderr, "spec_long: a run failed, %s not written\n", path);
+            return;
+        }
+        std::FILE* f = std::fopen(path, "w");
+        if (!f) {
+            std::fprintf(stderr, "spec_long: cannot write %s\n", path);
+            return;
+        }
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+        std::fprintf(f, "{\n \"seed\": %llu,\n \"pixels\": %llu,\n \"seconds\": %.0f,\n \"runs\": [",
+                     (unsigned long long)kSeed, (unsigned long long)kPixels, secs);
+        for (size_t i = 0; i < rows().size(); ++i) {
+            const RunRow& r = rows()[i];
+            std::fprintf(f, "%s\n  {\"core\": \"%s\", \"pixels\": %llu, \"spans\": %llu, \"cycles\": %llu, "
+                         "\"events\": \"%s\", \"other\": \"%s\"}", i ? "," : "", r.core.c_str(),
+                         (unsigned long long)r.pixels, (unsigned long long)r.spans, (unsigned long long)r.cycles,
+                         r.events.c_str(), r.other.c_str());
+        }
+        std::fprintf(f, "\n ]\n}\n");
+        std::fclose(f);
+    }
+
+private:
+    std::chrono::steady_clock::time_point t0_;
+};
+::testing::Environment* const kReport = ::testing::AddGlobalTestEnvironment(new ReportOnExit);
 
 struct Expected {
     uint32_t value;
@@ -104,7 +132,7 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
         }
         const bool reset_now = cycles == next_reset;
         if (!offering && std::bernoulli_distribution(p_offer)(rng)) {
-            cur = random_span(rng, m, rng() % 4096 == 0 ? 65535 : rng() % 8 == 0 ? 400 : 24);
+            cur = random_stream_span(rng, m, rng() % 4096 == 0 ? 65535 : rng() % 8 == 0 ? 400 : 24);
             offering = true;
         }
         t.s_axis_tvalid = offering;
@@ -166,6 +194,8 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
                 name, (unsigned long long)checked, (unsigned long long)spans_in, (unsigned long long)cycles,
                 (unsigned long long)resets, (unsigned long long)lost_by_reset);
     ::testing::Test::RecordProperty(std::string(name) + " pixels", std::to_string(checked));
+    rows().push_back({name, checked, spans_in, cycles, count(resets, "resets"),
+                      lost_by_reset ? count(lost_by_reset, "pixels dropped by resets as specified") : ""});
     EXPECT_GT(resets, 0u);
 }
 
@@ -181,27 +211,31 @@ TEST(Long, StreamTunedAgainstModel) {
 
 // spec_unit: registers written in the cycle of Start or before it, Start in the cycle busy_o falls (back to
 // back) or after idle cycles, Start/writes/loads with random values while busy (ignored), init_n low in the
-// middle of some spans, now and then a Start without a new load (2^16 pixels). Each pixel is checked
-// against the model and against its cycle: pixel i's valid_o exactly 15 + 2i cycles after Start.
+// middle of some spans, now and then a Start without a new load (the length register's l again: the last
+// loaded one, 0 after init_n). Start acts on its rising edge: the noise while busy leaves Start low in the
+// last busy cycle, so that Start in the cycle busy_o falls is an edge (Start high from a busy cycle into the
+// first idle one begins nothing: tests/test_start.cpp). Each pixel is checked against the model and against
+// its cycle: pixel i's valid_o exactly 15 + 2i cycles after Start.
 template <class V>
 void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) {
     UnitDriverT<V> d;
     auto& t = d.top();
     std::mt19937_64 rng(seed);
     uint64_t checked = 0, spans = 0, inits = 0, noload = 0, chained = 0;
-    const int kFirst = 15;
-    bool counter_max = false;   // counter 5 holds 2^16 - 1 (after a span, no load since)
+    const int kFirst = m.format().unit_first_pixel();   // 15 (rom/gen/spec_format.h)
+    uint32_t len_reg = 0;       // the length register: the last l loaded (0 after init_n)
     SpanRegs regs{};            // what registers 1-4 hold
     bool start_now = false;     // Start in the cycle busy_o falls
     while (checked < pixels) {
         // idle: maybe some cycles with nothing, writes now or in the Start cycle
-        SpanRegs next = random_span(rng, m, rng() % 8 == 0 ? 400 : 30);
+        SpanRegs next = random_stream_span(rng, m, rng() % 8 == 0 ? 400 : 30);
         bool load = true;
-        if (counter_max && rng() % 3000 == 0) {
-            load = false;   // Start without a new load: 2^16 pixels
-            next.len = 0xffff;
+        if (rng() % 64 == 0) {
+            load = false;   // Start without a new load: the length register's l
+            next.len = len_reg;
             ++noload;
         }
+        len_reg = next.len;
         if (!start_now) {
             const int gap = static_cast<int>(rng() % 4);
             for (int i = 0; i < gap; ++i) d.step();
@@ -230,7 +264,6 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
         regs = next;
         d.step();
         ++spans;
-        counter_max = false;
         const auto want = m.span(regs);
         // run the span: noise while busy, maybe an init
         const uint64_t init_at = rng() % 16 == 0 ? 1 + rng() % (kFirst + 2 * want.size()) : 0;
@@ -247,6 +280,7 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
                 ASSERT_FALSE(t.valid_o) << "valid after init_n";
                 ASSERT_EQ(t.intensity_o, 0u);
                 regs = SpanRegs{};
+                len_reg = 0;
                 break;
             }
             // busy_o must fall in cycle 15 + 2l (checked below); past it, fail rather than loop forever
@@ -255,7 +289,6 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
                 ASSERT_EQ(got, want.size()) << "span " << spans << " ended after " << got << " of " << want.size()
                                             << " pixels";
                 ASSERT_EQ(c, uint64_t(kFirst + 2 * want.size() - 1)) << "busy_o fell late or early, span " << spans;
-                counter_max = true;
                 start_now = rng() % 2;
                 break;
             }
@@ -268,7 +301,7 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
             }
             // noise: everything here must be ignored while busy
             if (rng() % 4 == 0) {
-                t.start = rng() % 2;
+                t.start = c + 2 < uint64_t(kFirst + 2 * want.size()) ? rng() % 2 : 0;
                 t.c_we = rng() % 2;
                 t.c_i = static_cast<uint32_t>(rng());
                 t.n_we = rng() % 2;
@@ -288,6 +321,8 @@ void unit_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) 
                 name, (unsigned long long)checked, (unsigned long long)spans, (unsigned long long)chained,
                 (unsigned long long)inits, (unsigned long long)noload, (unsigned long long)d.cycle());
     ::testing::Test::RecordProperty(std::string(name) + " pixels", std::to_string(checked));
+    rows().push_back({name, checked, spans, d.cycle(), count(inits, "cut by init_n"),
+                      count(chained, "back to back") + ", " + count(noload, "without a new load")});
     EXPECT_GT(inits, 0u);
 }
 

@@ -11,44 +11,21 @@
 #include "Vspec_mul11.h"
 #include "Vspec_mul13.h"
 #include "spec_model.h"
-#include "verilated.h"
+#include "harness.h"
 
 using namespace spec;
 
 namespace {
-// Verilator 5.006 registers a model's scopes in the thread's current context: make it this model's
-// around construction and destruction.
+// Every module test on the one harness (sim/rtl/harness.h): own context, tick(), reset().
 template <class V>
-struct Dut {
-    std::unique_ptr<VerilatedContext> ctx{current(new VerilatedContext)};
-    std::unique_ptr<V> v{new V(ctx.get())};
-    static VerilatedContext* current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
-    }
-    Dut() {
-        v->clk = 0;
-        v->eval();
-    }
-    ~Dut() {
-        Verilated::threadContextp(ctx.get());
-        v->final();
-        v.reset();
-    }
-    void tick() {
-        v->clk = 1;
-        v->eval();
-        v->clk = 0;
-        v->eval();
-    }
-    V* operator->() { return v.get(); }
-};
+ResetPort<V> rst_port() {
+    return active_high<V>([](V& v) -> CData& { return v.rst; });
+}
 }  // namespace
 
 // Decoder 10: the Fig. 10 rule on every 10-bit n, one-hot 30..33 and the table code.
 TEST(Decoder10, Fig10RuleExhaustive) {
-    VerilatedContext ctx;
-    std::unique_ptr<Vspec_decoder> d{new Vspec_decoder(&ctx)};
+    Harness<Vspec_decoder> d;  // combinational: eval() only
     for (unsigned n = 0; n < 1024; ++n) {
         d->n = n;
         d->eval();
@@ -64,10 +41,8 @@ TEST(Decoder10, Fig10RuleExhaustive) {
 
 // Counter 5: load (active low), count down, borrow 35 low exactly on the 0 -> max step.
 TEST(Counter5, LoadCountBorrow) {
-    Dut<Vspec_counter> c;
-    c->rst = 1;
-    c.tick();
-    c->rst = 0;
+    Harness<Vspec_counter> c(rst_port<Vspec_counter>());
+    c.reset();
     EXPECT_EQ(c->q, 0);
     c->load_n = 0;
     c->d = 3;
@@ -96,12 +71,10 @@ TEST(Counter5, LoadCountBorrow) {
 
 // Adder 6, multiplexer 7, register 8: select 36 picks register 3 or the saturating sum.
 TEST(Accum678, MatchesModel) {
-    Dut<Vspec_accum> a;
+    Harness<Vspec_accum> a(rst_port<Vspec_accum>());
     const Model m;
     std::mt19937_64 rng(3);
-    a->rst = 1;
-    a.tick();
-    a->rst = 0;
+    a.reset();
     EXPECT_EQ(a->angle, 0u);
     int64_t ref = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -121,7 +94,7 @@ TEST(Accum678, MatchesModel) {
 
 // Multiplier 11 against the model for random angles and every ROM 9 word, plus the pi/2 edge.
 TEST(Mul11, MatchesModel) {
-    Dut<Vspec_mul11> u;
+    Harness<Vspec_mul11> u;
     const Model m;
     std::mt19937_64 rng(4);
     u->ce = 1;
@@ -162,7 +135,7 @@ TEST(Mul11, MatchesModel) {
 
 // Multiplier 13: rounding, zero flag, C exactly for the table's 1.0, never overflows.
 TEST(Mul13, MatchesModel) {
-    Dut<Vspec_mul13> u;
+    Harness<Vspec_mul13> u;
     const Model m;
     std::mt19937_64 rng(5);
     u->rst = 0;
@@ -191,11 +164,9 @@ TEST(Mul13, MatchesModel) {
 
 // Control block 14 alone, with counter 5 modelled beside it: the Fig. 11 sequence for l = 3.
 TEST(Ctrl14, Fig11SequenceStandalone) {
-    Dut<Vspec_ctrl> c;
-    c->init_n = 0;
+    Harness<Vspec_ctrl> c(active_low<Vspec_ctrl>([](Vspec_ctrl& v) -> CData& { return v.init_n; }));
     c->borrow_n = 1;
-    c.tick();
-    c->init_n = 1;
+    c.reset();
     unsigned counter = 3;
     std::string s37, s36, s34, s28;
     c->start = 1;

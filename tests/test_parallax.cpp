@@ -8,8 +8,8 @@
 
 #include "Vparallax_step.h"
 #include "parallax.h"
+#include "harness.h"
 #include "parallax_fixed.h"
-#include "verilated.h"
 
 using namespace spec::methods;
 
@@ -170,33 +170,11 @@ TEST(Parallax, FixedPointLoopTracksDoubleIteration) {
 }
 
 namespace {
-template <class V>
-struct Dut {
-    std::unique_ptr<VerilatedContext> ctx{current(new VerilatedContext)};
-    std::unique_ptr<V> v{new V(ctx.get())};
-    static VerilatedContext* current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
+// the one harness (sim/rtl/harness.h), reset applied once
+struct Dut : spec::Harness<Vparallax_step> {
+    Dut() : Harness(spec::active_high<Vparallax_step>([](Vparallax_step& v) -> CData& { return v.rst; })) {
+        reset();
     }
-    Dut() {
-        v->clk = 0;
-        v->rst = 1;
-        v->eval();
-        tick();
-        v->rst = 0;
-    }
-    ~Dut() {
-        Verilated::threadContextp(ctx.get());
-        v->final();
-        v.reset();
-    }
-    void tick() {
-        v->clk = 1;
-        v->eval();
-        v->clk = 0;
-        v->eval();
-    }
-    V* operator->() { return v.get(); }
 };
 
 uint32_t bits(int64_t x, int w) { return uint32_t(uint64_t(x) & ((uint64_t(1) << w) - 1)); }
@@ -211,7 +189,7 @@ int64_t sext(uint64_t x, int w) {
 // in-range steps, and whole iterations traced from iterative_fixed; one step per clock, seven cycles latency.
 TEST(ParallaxStepRtl, BitExactAgainstModel) {
     const StepFormat fmt;
-    Dut<Vparallax_step> d;
+    Dut d;
     std::mt19937_64 rng(17);
     std::vector<StepIn> ins;
     auto rnd = [&](int w) { return sext(rng(), w); };

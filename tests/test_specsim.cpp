@@ -1,7 +1,5 @@
 // specsim as a user runs it: output format, model agreement, and bad input.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -9,38 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace {
-struct Result {
-    int code;
-    std::string out;  // stdout
-    std::string err;  // stderr
-};
+#include "common.h"
 
-Result run(const std::string& args) {
-    // one file per process: ctest runs the tests of this suite in parallel processes
-    const std::string errfile = ::testing::TempDir() + "/specsim_err." + std::to_string(getpid()) + ".txt";
-    const std::string cmd = std::string(SPECSIM_PATH) + " " + args + " 2>" + errfile + " </dev/null";
-    Result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    char buf[4096];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, k);
-    const int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    FILE* e = fopen(errfile.c_str(), "r");
-    while (e && (k = fread(buf, 1, sizeof buf, e)) > 0) r.err.append(buf, k);
-    if (e) fclose(e);
-    std::remove(errfile.c_str());
-    return r;
-}
-
-std::vector<std::string> lines(const std::string& s) {
-    std::vector<std::string> v;
-    std::istringstream is(s);
-    for (std::string l; std::getline(is, l);) v.push_back(l);
-    return v;
-}
-}  // namespace
+using namespace spec::test;
 
 TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
     const char* spans[] = {
@@ -51,9 +20,9 @@ TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
         "--n 3 --c 0.123 --zeta0 7.9 --dzeta -1.9 --len 8",
     };
     for (const char* s : spans) {
-        Result rtl = run(std::string("span ") + s);
-        Result gold = run(std::string("span ") + s + " --model golden");
-        Result stream = run(std::string("span ") + s + " --model stream");
+        CliRun rtl = specsim(std::string("span ") + s);
+        CliRun gold = specsim(std::string("span ") + s + " --model golden");
+        CliRun stream = specsim(std::string("span ") + s + " --model stream");
         ASSERT_EQ(rtl.code, 0) << rtl.err;
         ASSERT_EQ(gold.code, 0) << gold.err;
         ASSERT_EQ(stream.code, 0) << stream.err;
@@ -71,12 +40,12 @@ TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
             EXPECT_LT(v, 1.0);
         }
     }
-    Result r = run("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3");
+    CliRun r = specsim("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3");
     EXPECT_EQ(lines(r.out).size(), 5u) << "header and l + 1 rows";
 }
 
 TEST(Specsim, RefIsDoublePrecisionBlinnPhong) {
-    Result r = run("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3 --model ref");
+    CliRun r = specsim("span --n 10 --c 0.75 --zeta0 -0.15 --dzeta 0.1 --len 3 --model ref");
     ASSERT_EQ(r.code, 0) << r.err;
     auto l = lines(r.out);
     ASSERT_EQ(l.size(), 5u);
@@ -85,7 +54,7 @@ TEST(Specsim, RefIsDoublePrecisionBlinnPhong) {
         const double v = std::stod(l[i + 1].substr(l[i + 1].find(',') + 1));
         EXPECT_NEAR(v, 0.75 * std::pow(std::cos(ang), 10), 1e-15);
     }
-    Result back = run("span --n 5 --c 0.5 --zeta0 2 --dzeta 0.5 --len 1 --model ref");
+    CliRun back = specsim("span --n 5 --c 0.5 --zeta0 2 --dzeta 0.5 --len 1 --model ref");
     EXPECT_NE(back.out.find("1,0.0000000000000000"), std::string::npos) << "max(0, cos) past pi/2";
 }
 
@@ -118,20 +87,20 @@ TEST(Specsim, BadInputGetsOneLineAndExitCode2) {
         "span --n 5 --c 0.5 --zeta0 0 --dzeta 0.1 --len 3 --model 'a\tb\x01\r\n'",
     };
     for (const char* b : bad) {
-        Result r = run(b);
+        CliRun r = specsim(b);
         EXPECT_EQ(r.code, 2) << b;
         EXPECT_TRUE(r.out.empty()) << b << ": " << r.out;
         auto l = lines(r.err);
         EXPECT_EQ(l.size(), 1u) << b << ": " << r.err;
         if (!l.empty()) EXPECT_EQ(l[0].rfind("specsim: ", 0), 0u) << l[0];
     }
-    EXPECT_NE(run("span --n '1\n2' " + ok).err.find("'1\\n2' is not an integer"), std::string::npos);
-    EXPECT_EQ(run("span --n 5 " + ok).code, 0);
-    EXPECT_EQ(run("span --n 5 --c 0.5 --zeta0 -8 --dzeta 0 --len 3").code, 0) << "-8 is the format's minimum";
+    EXPECT_NE(specsim("span --n '1\n2' " + ok).err.find("'1\\n2' is not an integer"), std::string::npos);
+    EXPECT_EQ(specsim("span --n 5 " + ok).code, 0);
+    EXPECT_EQ(specsim("span --n 5 --c 0.5 --zeta0 -8 --dzeta 0 --len 3").code, 0) << "-8 is the format's minimum";
 }
 
 TEST(Specsim, Fig8PrintsTheRecomputedTable) {
-    Result r = run("fig8");
+    CliRun r = specsim("fig8");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("Fig. 8 recomputed"), std::string::npos);
     EXPECT_NE(r.out.find("n = 3..6"), std::string::npos);

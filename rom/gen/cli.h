@@ -1,5 +1,7 @@
 // cli.h - strict parsing of command-line values, shared by specrom and specsim.
-// Every failure throws UsageError with a one-line message; the programs print it and exit 2.
+// Every failure throws UsageError with a one-line message; the programs print it and exit 2. InputError is
+// the same promise for input that is not the command line (a file, an output path that cannot be written).
+// Anything else a program throws is an internal error (specsim: exit 3).
 #pragma once
 
 #include <cerrno>
@@ -34,6 +36,10 @@ inline std::string printable(const std::string& s) {
 
 struct UsageError : std::runtime_error {
     explicit UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
+};
+
+struct InputError : std::runtime_error {
+    explicit InputError(const std::string& what) : std::runtime_error(printable(what)) {}
 };
 
 inline long long parse_int(const std::string& flag, const std::string& s, long long lo, long long hi) {

@@ -96,15 +96,16 @@ std::vector<std::array<Vec, 4>> random_triangles(uint64_t samples, double r_deg)
 nhb::Vec3<Counted> cv(const Vec& v) { return nhb::Vec3<Counted>{v.x, v.y, v.z}; }
 }  // namespace
 
-SceneEval evaluate_scene(const std::string& label, const render::Scene& sc, int size, render::SpecModel model) {
+SceneEval evaluate_scene(const std::string& label, const render::Scene& sc, int size, render::SpecModel model,
+                         SpanCore* unit) {
     const Model core;
     SceneEval ev;
     ev.scene = label;
     const render::Frame fr = render::rasterize(sc, size, size);
     const render::Shading base = render::shade_base(sc, fr);
     const CullResult cr = cull_spans(sc, fr, core);
-    const render::SpecRun all = render::shade_specular(sc, fr, model, render::RgbMode::once);
-    const render::SpecRun culled = render::shade_specular(sc, kept_frame(fr, cr), model, render::RgbMode::once);
+    const render::SpecRun all = render::shade_specular(sc, fr, model, unit, render::RgbMode::once);
+    const render::SpecRun culled = render::shade_specular(sc, kept_frame(fr, cr), model, unit, render::RgbMode::once);
     const render::Image img_all = render::compose(base, all);
     const render::ImageStats st = render::compare(render::compose(base, culled), img_all, base.covered);
     CullRow& c = ev.cull;

@@ -63,7 +63,10 @@ struct SceneEval {
     render::Image image;                 // the scene through the core, no culling
     render::Frame frame;
 };
-SceneEval evaluate_scene(const std::string& label, const render::Scene& sc, int size, render::SpecModel model);
+// core: what runs the spans of render::SpecModel::rtl (the renderer takes it, sim/model/span_core.h: specsim
+// passes the Verilated spec_unit); golden needs none.
+SceneEval evaluate_scene(const std::string& label, const render::Scene& sc, int size, render::SpecModel model,
+                         SpanCore* core = nullptr);
 
 // The paper's test against the exact one on random spherical triangles: vertex normals uniform in a cap of
 // radius r around a random direction, H uniform in the cap of radius 1.5 r, seed 1.

@@ -9,7 +9,7 @@
 #include "Vparallax_iter.h"
 #include "Vparallax_iter_s1.h"
 #include "Vparallax_iter_s16.h"
-#include "verilated.h"
+#include "harness.h"
 
 namespace spec {
 namespace methods {
@@ -25,25 +25,15 @@ template <class V>
 IterRunResult run(const std::vector<IterJob>& jobs, const HeightFetch& fetch, const IterRunConfig& cfg, int slots) {
     const StepFormat fmt;
     constexpr int kTagW = 16;
-    std::unique_ptr<VerilatedContext> ctx(new VerilatedContext);
-    Verilated::threadContextp(ctx.get());
-    std::unique_ptr<V> d(new V(ctx.get()));
-    auto tick = [&] {
-        d->clk = 1;
-        d->eval();
-        d->clk = 0;
-        d->eval();
-    };
-    d->clk = 0;
-    d->rst = 1;
+    // the one Verilated harness (sim/rtl/harness.h): own context, clock, reset
+    Harness<V> h(active_high<V>([](V& v) -> CData& { return v.rst; }));
+    V* const d = &h.top();
+    auto tick = [&] { h.tick(); };
     d->s_valid = 0;
     d->req_ready = 0;
     d->rsp_valid = 0;
     d->m_ready = 0;
-    d->eval();
-    tick();
-    tick();
-    d->rst = 0;
+    h.reset(2);
 
     std::mt19937_64 rng(cfg.seed);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
@@ -152,8 +142,7 @@ IterRunResult run(const std::vector<IterJob>& jobs, const HeightFetch& fetch, co
         tick();
     }
     r.cycles = cyc;
-    d->final();
-    return r;
+    return r;   // the harness runs final() and drops the context
 }
 }  // namespace
 

@@ -172,12 +172,12 @@ std::string fig8_report(bool all_n, Mode mode) {
     }
     unsigned over = 0;
     for (unsigned n = 1; n <= 1000; ++n) over += e.q[n] > 0.01;
-    unsigned worst6 = 6;
-    for (unsigned n = 6; n <= 1000; ++n) if (e.q[n] > e.q[worst6]) worst6 = n;
+    unsigned worst_n_from_6 = 6;
+    for (unsigned n = 6; n <= 1000; ++n) if (e.q[n] > e.q[worst_n_from_6]) worst_n_from_6 = n;
     std::snprintf(buf, sizeof buf,
                   "\n%s: q <= 1 %% for n = 1..1000 -> %u value(s) of n exceed 1 %%;\n"
                   "                 q <= 0.6 %% for n >= 6    -> worst for n >= 6 is %.4f %% at n = %u.\n",
-                  tuned ? "Patent's claims, tuned" : "Patent's claims", over, 100.0 * e.q[worst6], worst6);
+                  tuned ? "Patent's claims, tuned" : "Patent's claims", over, 100.0 * e.q[worst_n_from_6], worst_n_from_6);
     o << buf;
     if (all_n) {
         o << "\n   n   k   q(n) %     a(n) %   epicentre end (rad)\n";

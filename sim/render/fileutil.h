@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli.h"
+
 namespace spec {
 namespace render {
 
@@ -15,7 +17,7 @@ inline void write_atomic(const std::string& path, const std::function<void(const
     const std::string tmp = path + ".tmp";
     try {
         write(tmp);
-        if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot write " + path);
+        if (std::rename(tmp.c_str(), path.c_str()) != 0) throw InputError("cannot write " + path);
     } catch (...) {
         std::remove(tmp.c_str());
         throw;

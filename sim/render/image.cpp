@@ -75,13 +75,13 @@ void write_png(const std::string& path, const Image& img) {
     if (img.w <= 0 || img.h <= 0) throw std::runtime_error("cannot write an empty image to " + path);
     write_atomic(path, [&](const std::string& tmp) {
         File f{std::fopen(tmp.c_str(), "wb")};
-        if (!f.f) throw std::runtime_error("cannot write " + path);
+        if (!f.f) throw InputError("cannot write " + path);
         PngWrite p;
         p.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
         if (!p.png) throw std::runtime_error("libpng: out of memory");
         p.info = png_create_info_struct(p.png);
         if (!p.info) throw std::runtime_error("libpng: out of memory");
-        if (setjmp(png_jmpbuf(p.png))) throw std::runtime_error("cannot write " + path + " (libpng)");
+        if (setjmp(png_jmpbuf(p.png))) throw InputError("cannot write " + path + " (libpng)");
         png_init_io(p.png, f.f);
         png_set_IHDR(p.png, p.info, png_uint_32(img.w), png_uint_32(img.h), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                      PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -89,20 +89,20 @@ void write_png(const std::string& path, const Image& img) {
         png_write_info(p.png, p.info);
         for (int y = 0; y < img.h; ++y) png_write_row(p.png, const_cast<png_bytep>(img.at(0, y)));
         png_write_end(p.png, nullptr);
-        if (std::fflush(f.f) != 0 || std::ferror(f.f)) throw std::runtime_error("cannot write " + path);
+        if (std::fflush(f.f) != 0 || std::ferror(f.f)) throw InputError("cannot write " + path);
     });
 }
 
 Image read_png(const std::string& path) {
     File f{std::fopen(path.c_str(), "rb")};
-    if (!f.f) throw std::runtime_error("cannot read " + path);
+    if (!f.f) throw InputError("cannot read " + path);
     PngRead p;
     p.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     if (!p.png) throw std::runtime_error("libpng: out of memory");
     p.info = png_create_info_struct(p.png);
     if (!p.info) throw std::runtime_error("libpng: out of memory");
     Image img;
-    if (setjmp(png_jmpbuf(p.png))) throw std::runtime_error(path + " is not a readable PNG");
+    if (setjmp(png_jmpbuf(p.png))) throw InputError(path + " is not a readable PNG");
     png_init_io(p.png, f.f);
     png_read_info(p.png, p.info);
     png_set_strip_16(p.png);

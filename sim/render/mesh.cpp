@@ -1,18 +1,12 @@
+// mesh.cpp - meshes: validation and transforms, the procedural sphere and torus, Newell's teapot. OBJ files in
+// and out are obj.cpp.
 #include "mesh.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
-#include <tiny_obj_loader.h>
-
-#include "fileutil.h"
 
 namespace spec {
 namespace render {
@@ -68,82 +62,6 @@ void patch_eval(int p, double u, double v, dvec3* pt, dvec3* du, dvec3* dv) {
     }
 }
 
-std::string trim(const std::string& s) {
-    const size_t a = s.find_first_not_of(" \t\r");
-    if (a == std::string::npos) return "";
-    const size_t b = s.find_last_not_of(" \t\r");
-    return s.substr(a, b - a + 1);
-}
-
-bool parse_real(const std::string& s, double* v) {
-    errno = 0;
-    char* end = nullptr;
-    *v = std::strtod(s.c_str(), &end);
-    return end != s.c_str() && *end == '\0';
-}
-
-bool parse_index(const std::string& s) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    return *end == '\0' && v != 0;
-}
-
-// The checks tinyobjloader does not make (it reads "v 1 x 2" as (1, 0, 2) and splits polygons when asked):
-// every v / vn / vt / f record well formed, normals finite and non-zero, faces triangles.
-void check_obj_syntax(const std::string& path, std::istream& in) {
-    std::string line;
-    int no = 0;
-    auto fail = [&](const std::string& why) {
-        throw InputError(path + ":" + std::to_string(no) + ": " + why);
-    };
-    while (std::getline(in, line)) {
-        ++no;
-        const size_t hash = line.find('#');
-        if (hash != std::string::npos) line.resize(hash);
-        line = trim(line);
-        if (line.empty()) continue;
-        std::istringstream is(line);
-        std::string key, tok;
-        is >> key;
-        std::vector<std::string> toks;
-        while (is >> tok) toks.push_back(tok);
-        if (key == "v" || key == "vn" || key == "vt") {
-            std::vector<double> x;
-            for (const auto& t : toks) {
-                double v;
-                if (!parse_real(t, &v)) fail("malformed '" + key + "' record: '" + t + "' is not a number");
-                x.push_back(v);
-            }
-            const size_t k = x.size();
-            if (key == "v" && !(k == 3 || k == 4 || k == 6 || k == 7)) fail("a vertex needs 3 coordinates");
-            if (key == "vn" && k != 3) fail("a normal needs 3 coordinates");
-            if (key == "vt" && (k < 1 || k > 3)) fail("a texture coordinate needs 1 to 3 numbers");
-            for (double v : x) {
-                if (!std::isfinite(v)) fail("'" + key + "' record is not finite (" + line + ")");
-            }
-            if (key == "vn" && x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0) fail("zero-length normal");
-        } else if (key == "f") {
-            if (toks.size() < 3) fail("a face needs 3 vertices");
-            if (toks.size() != 3) {
-                fail("face with " + std::to_string(toks.size()) + " vertices: the OBJ must be triangulated");
-            }
-            for (const auto& t : toks) {
-                // v, v/vt, v//vn, v/vt/vn
-                std::vector<std::string> parts;
-                size_t a = 0;
-                for (size_t b; (b = t.find('/', a)) != std::string::npos; a = b + 1) parts.push_back(t.substr(a, b - a));
-                parts.push_back(t.substr(a));
-                bool ok = parts.size() <= 3 && parse_index(parts[0]);
-                if (ok && parts.size() >= 2 && !parts[1].empty()) ok = parse_index(parts[1]);
-                if (ok && parts.size() == 3) ok = parse_index(parts[2]);
-                if (ok && parts.size() == 2 && parts[1].empty()) ok = false;
-                if (!ok) fail("malformed face vertex '" + t + "'");
-            }
-        }
-        // other records (o, g, s, usemtl, mtllib, l, p, ...) do not affect the triangles
-    }
-}
 }  // namespace
 
 void Mesh::transform(const glm::dmat4& m) {
@@ -256,119 +174,6 @@ Mesh make_teapot(int subdiv) {
     }
     orient_by_normals(m);
     return m;
-}
-
-Mesh load_obj(const std::string& path) {
-    {
-        std::ifstream in(path);
-        if (!in) throw InputError("cannot read OBJ file '" + path + "'");
-        check_obj_syntax(path, in);
-    }
-    tinyobj::ObjReaderConfig cfg;
-    cfg.triangulate = false;
-    cfg.vertex_color = false;
-    const size_t slash = path.find_last_of('/');
-    cfg.mtl_search_path = slash == std::string::npos ? "./" : path.substr(0, slash + 1);
-    tinyobj::ObjReader r;
-    if (!r.ParseFromFile(path, cfg)) {
-        std::string e = r.Error();
-        while (!e.empty() && (e.back() == '\n' || e.back() == '\r')) e.pop_back();
-        const size_t nl = e.find('\n');
-        throw InputError(path + ": " + (nl == std::string::npos ? e : e.substr(0, nl)));
-    }
-    const auto& at = r.GetAttrib();
-    const size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3;
-    Mesh m;
-    std::map<std::pair<int, int>, uint32_t> index;  // (position, normal) -> vertex
-    std::vector<int> pos_of;                          // vertex -> position index
-    std::vector<bool> given;                          // vertex has an OBJ normal
-    for (const auto& sh : r.GetShapes()) {
-        size_t k = 0;
-        for (size_t f = 0; f < sh.mesh.num_face_vertices.size(); ++f) {
-            const int fv = sh.mesh.num_face_vertices[f];
-            if (fv != 3) throw InputError(path + ": face with " + std::to_string(fv) + " vertices: the OBJ must be triangulated");
-            std::array<uint32_t, 3> t{};
-            for (int c = 0; c < 3; ++c) {
-                const auto& ix = sh.mesh.indices[k++];
-                if (ix.vertex_index < 0 || size_t(ix.vertex_index) >= nv) {
-                    throw InputError(path + ": face " + std::to_string(f + 1) + " refers to a vertex that does not exist");
-                }
-                if (ix.normal_index >= 0 && size_t(ix.normal_index) >= nn) {
-                    throw InputError(path + ": face " + std::to_string(f + 1) + " refers to a normal that does not exist");
-                }
-                const auto key = std::make_pair(ix.vertex_index, ix.normal_index);
-                auto it = index.find(key);
-                if (it == index.end()) {
-                    const auto* p = &at.vertices[3 * size_t(ix.vertex_index)];
-                    m.pos.emplace_back(p[0], p[1], p[2]);
-                    if (ix.normal_index >= 0) {
-                        const auto* n = &at.normals[3 * size_t(ix.normal_index)];
-                        const dvec3 nv3(n[0], n[1], n[2]);
-                        if (!finite(nv3)) throw InputError(path + ": normal " + std::to_string(ix.normal_index + 1) + " is not finite");
-                        if (glm::length(nv3) < 1e-12) throw InputError(path + ": normal " + std::to_string(ix.normal_index + 1) + " has zero length");
-                        m.nrm.push_back(glm::normalize(nv3));
-                    } else {
-                        m.nrm.emplace_back(0.0);
-                    }
-                    pos_of.push_back(ix.vertex_index);
-                    given.push_back(ix.normal_index >= 0);
-                    it = index.emplace(key, uint32_t(m.pos.size() - 1)).first;
-                }
-                t[c] = it->second;
-            }
-            m.tri.push_back(t);
-        }
-    }
-    if (m.tri.empty()) throw InputError(path + ": no triangles");
-    // Missing normals: angle-weighted average of the faces around the position.
-    std::vector<dvec3> acc(nv, dvec3(0));
-    bool need = false;
-    for (bool g : given) need = need || !g;
-    if (need) {
-        for (const auto& t : m.tri) {
-            const dvec3 fnorm = glm::cross(m.pos[t[1]] - m.pos[t[0]], m.pos[t[2]] - m.pos[t[0]]);
-            if (glm::length(fnorm) == 0.0) continue;
-            const dvec3 fn = glm::normalize(fnorm);
-            for (int c = 0; c < 3; ++c) {
-                const dvec3 e1 = m.pos[t[(c + 1) % 3]] - m.pos[t[c]], e2 = m.pos[t[(c + 2) % 3]] - m.pos[t[c]];
-                const double l1 = glm::length(e1), l2 = glm::length(e2);
-                if (l1 == 0 || l2 == 0) continue;
-                const double ang = std::acos(std::max(-1.0, std::min(1.0, glm::dot(e1, e2) / (l1 * l2))));
-                acc[size_t(pos_of[t[c]])] += ang * fn;
-            }
-        }
-        for (size_t v = 0; v < m.pos.size(); ++v) {
-            if (given[v]) continue;
-            const dvec3 a = acc[size_t(pos_of[v])];
-            if (!(glm::length(a) > 1e-300)) {
-                throw InputError(path + ": vertex " + std::to_string(pos_of[v] + 1) +
-                                 " has no normal and only degenerate faces to make one from");
-            }
-            m.nrm[v] = glm::normalize(a);
-        }
-    }
-    m.validate(path);
-    return m;
-}
-
-void write_obj(const Mesh& m, const std::string& path) {
-    write_atomic(path, [&](const std::string& tmp) {
-        std::ofstream o(tmp);
-        char buf[128];
-        o << "# written by specsim\n";
-        for (const auto& p : m.pos) {
-            std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
-            o << buf;
-        }
-        for (const auto& n : m.nrm) {
-            std::snprintf(buf, sizeof buf, "vn %.17g %.17g %.17g\n", n.x, n.y, n.z);
-            o << buf;
-        }
-        for (const auto& t : m.tri) o << "f " << t[0] + 1 << "//" << t[0] + 1 << " " << t[1] + 1 << "//" << t[1] + 1
-                                      << " " << t[2] + 1 << "//" << t[2] + 1 << "\n";
-        o.close();
-        if (!o) throw std::runtime_error("cannot write " + path);
-    });
 }
 
 }  // namespace render

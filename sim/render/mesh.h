@@ -20,9 +20,7 @@ using glm::dvec3;
 
 // Bad input (a file, an option): one-line message; specsim prints it and exits 2.
 // Control characters from the input (an OBJ token, a name) are escaped (spec::printable, rom/gen/cli.h).
-struct InputError : std::runtime_error {
-    explicit InputError(const std::string& what) : std::runtime_error(spec::printable(what)) {}
-};
+using spec::InputError;
 
 struct Mesh {
     std::vector<dvec3> pos;                      // vertex positions
@@ -45,10 +43,25 @@ Mesh make_torus(double R, double r, int major, int minor);
 // `subdiv` x `subdiv` quads, normals from the patch derivatives.
 Mesh make_teapot(int subdiv);
 
-// An OBJ file: triangles only (a face with more than three vertices is an error, not triangulated
-// silently), positions and normals finite, normals non-zero. Without 'vn' records the normals are the
-// angle-weighted averages of the faces around each position.
-Mesh load_obj(const std::string& path);
+// What load_obj met in an OBJ file (specsim render prints it and puts it in the statistics JSON).
+struct ObjStats {
+    bool loaded = false;
+    uint64_t faces = 0;               // 'f' records
+    uint64_t polygons = 0;            // faces of more than three vertices, triangulated (polygon.h)
+    uint64_t triangles = 0;           // triangles made
+    uint64_t degenerate = 0;          // triangles of no area left out (collinear or repeated points)
+    uint64_t normals_missing = 0;     // vertices without a 'vn': smooth normal computed
+    uint64_t normals_zero = 0;        // vertices whose 'vn' has zero length: computed
+    uint64_t normals_not_finite = 0;  // vertices whose 'vn' is not finite (nan, inf): computed
+    uint64_t normals_computed() const { return normals_missing + normals_zero + normals_not_finite; }
+};
+
+// An OBJ file: faces of three or more vertices (convex or concave polygons are triangulated, polygon.h),
+// positions finite. Where a vertex has no 'vn', or a zero-length or non-finite one, its normal is the angle-
+// weighted average of the unit normals of the faces around its position (smooth shading); given normals are
+// normalized. Throws InputError (one line) for a malformed file, a face that refers to a missing vertex or
+// normal, or a file without a face of non-zero area. stats (optional) receives the counts.
+Mesh load_obj(const std::string& path, ObjStats* stats = nullptr);
 // Writes v / vn / f records (positions and normals with 17 significant digits), atomically.
 void write_obj(const Mesh& m, const std::string& path);
 

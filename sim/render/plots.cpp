@@ -25,7 +25,7 @@ void write_text(const std::string& path, const std::string& text) {
         std::ofstream o(tmp);
         o << text;
         o.close();
-        if (!o) throw std::runtime_error("cannot write " + path);
+        if (!o) throw InputError("cannot write " + path);
     });
 }
 
@@ -138,7 +138,7 @@ std::string make_plots(const std::string& dir) {
     }
     for (const char* f : {"fig5.png", "fig9.png"}) {
         const std::string p = dir + "/" + f;
-        if (std::rename((p + ".tmp").c_str(), p.c_str()) != 0) throw std::runtime_error("cannot write " + p);
+        if (std::rename((p + ".tmp").c_str(), p.c_str()) != 0) throw InputError("cannot write " + p);
     }
     std::remove((dir + "/gnuplot.log").c_str());
     char buf[512];

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -131,17 +132,49 @@ Scene make_scene(const std::string& name) {
     throw InputError("unknown scene '" + name + "' (one of " + names + ")");
 }
 
-Scene scene_from_obj(const std::string& path, const Material& m) {
+void set_view(Camera& c, const dvec3& view) {
+    check_vec(view, "view direction");
+    const double l = std::max({std::fabs(view.x), std::fabs(view.y), std::fabs(view.z)});
+    const dvec3 dir = glm::normalize(view / l);
+    const double dist = glm::length(c.eye - c.target);
+    c.eye = c.target + dir * dist;
+    const dvec3 up = glm::normalize(c.up);
+    if (std::fabs(glm::dot(up, dir)) > 0.999) {   // looking along up: take the world axis most across the view
+        const dvec3 axes[3] = {dvec3(0, 1, 0), dvec3(0, 0, -1), dvec3(1, 0, 0)};
+        dvec3 best = axes[0];
+        for (const dvec3& ax : axes) {
+            if (std::fabs(glm::dot(ax, dir)) < std::fabs(glm::dot(best, dir))) best = ax;
+        }
+        c.up = best;
+    }
+}
+
+Scene scene_from_obj(const std::string& path, const Material& m, const dvec3& view, double fov_deg) {
     Scene s;
     s.name = path;
     s.light.dir = glm::normalize(dvec3(-0.45, 0.75, 0.5));
-    Object o{path, load_obj(path), m};
-    dvec3 lo, hi;
-    o.mesh.bounds(&lo, &hi);
-    const dvec3 c = 0.5 * (lo + hi);
-    const double r = std::max(0.5 * glm::length(hi - lo), 1e-9);
-    s.camera.target = c;
-    s.camera.eye = c + glm::normalize(dvec3(0.0, 0.35, 1.0)) * (1.15 * r / std::sin(0.5 * s.camera.fov_deg * kPi / 180.0));
+    Object o{path, load_obj(path, &s.obj), m};
+    // bounding sphere: the box's centre and the farthest vertex, in coordinates divided by the largest magnitude
+    // (no overflow for huge models, no underflow for tiny ones)
+    Mesh& mesh = o.mesh;
+    double big = 0;
+    for (const dvec3& p : mesh.pos) big = std::max({big, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    if (!(big > 0)) big = 1;
+    dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const dvec3& p : mesh.pos) {
+        lo = glm::min(lo, p / big);
+        hi = glm::max(hi, p / big);
+    }
+    const dvec3 c = 0.5 * lo + 0.5 * hi;
+    double r = 0;
+    for (const dvec3& p : mesh.pos) r = std::max(r, glm::length(p / big - c));
+    if (!(r > 0)) throw InputError(path + ": every vertex is at the same point");
+    for (dvec3& p : mesh.pos) p = (p / big - c) / r;   // normals unchanged: a uniform scale and a shift
+    s.camera.target = dvec3(0.0);
+    if (fov_deg > 0 && fov_deg < 180) s.camera.fov_deg = fov_deg;
+    // the unit sphere seen under the vertical field of view (the image is square), with 15 % to spare
+    s.camera.eye = dvec3(0.0, 0.0, 1.15 / std::sin(0.5 * s.camera.fov_deg * kPi / 180.0));
+    set_view(s.camera, view);
     s.objects.push_back(std::move(o));
     return s;
 }

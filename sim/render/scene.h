@@ -46,6 +46,7 @@ struct Scene {
     dvec3 ambient{1.0, 1.0, 1.0};     // ambient light colour
     dvec3 background{0.05, 0.06, 0.09};
     Camera camera;
+    ObjStats obj;                     // an OBJ scene: what the reader met (loaded = false otherwise)
 
     // Throws InputError on what cannot be rendered: a zero-length or non-finite light direction or camera
     // vector, eye = target, up parallel to the view direction, fov outside (0, 180), colours or coefficients
@@ -57,8 +58,18 @@ struct Scene {
 // and beyond), "sphere", "torus", "teapot". Throws InputError for another name.
 Scene make_scene(const std::string& name);
 std::vector<std::string> scene_names();
-// One object from an OBJ file, with material m, camera framing the object's bounding box.
-Scene scene_from_obj(const std::string& path, const Material& m);
+// The default direction from a model's centre toward the camera (slightly from above).
+inline dvec3 default_view() { return dvec3(0.0, 0.35, 1.0); }
+// One object from an OBJ file (load_obj), with material m, moved and scaled so that its bounding sphere is the
+// unit sphere at the origin (any model size renders: the rasterizer's near and far planes are fixed), and
+// the camera framing that sphere from direction `view` (toward the camera, any length > 0): the whole model
+// is in the picture. Throws InputError for a bad file or a zero or non-finite view.
+// fov_deg: the vertical field of view the framing is for (outside (0, 180): the default's 40 degrees).
+Scene scene_from_obj(const std::string& path, const Material& m, const dvec3& view = default_view(),
+                     double fov_deg = 40.0);
+// Turns the camera about its target: the eye moves to the target + |eye - target| * normalize(view); the up
+// vector changes only when it would be parallel to the view. Throws InputError for a zero or non-finite view.
+void set_view(Camera& c, const dvec3& view);
 
 }  // namespace render
 }  // namespace spec

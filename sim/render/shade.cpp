@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "unit_driver.h"
+#include <stdexcept>
 
 namespace spec {
 namespace render {
@@ -80,14 +80,22 @@ Shading shade_base(const Scene& sc, const Frame& f) {
 
 SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode rgb, host::GammaRule rule,
                        const Progress& progress, Mode mode) {
+    return shade_specular(sc, f, model, nullptr, rgb, rule, progress, mode);
+}
+
+SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, SpanCore* drv, RgbMode rgb,
+                       host::GammaRule rule, const Progress& progress, Mode mode) {
     const auto t0 = std::chrono::steady_clock::now();
     SpecRun r;
     r.spec.assign(size_t(f.w) * size_t(f.h) * 3, 0.0f);
     Format fmt;
     fmt.mode = mode;
     const Model core(fmt);
-    std::unique_ptr<SpanCore> drv;
-    if (model == SpecModel::rtl) drv = make_unit_driver(mode);
+    ModelCore golden(core);
+    if (model == SpecModel::rtl && !drv) throw std::invalid_argument("shade_specular: the rtl model needs a SpanCore");
+    if (model == SpecModel::shader) throw std::invalid_argument("shade_specular: the shader model needs a SpanEndsCore");
+    if (model == SpecModel::golden && !drv) drv = &golden;
+    if (model != SpecModel::rtl && model != SpecModel::golden) drv = nullptr;
     const uint64_t cycle0 = drv ? drv->cycle() : 0;
     const bool per_channel = rgb == RgbMode::per_channel && (model == SpecModel::rtl || model == SpecModel::golden);
     std::vector<double> val;
@@ -106,7 +114,9 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode
             for (int c = 0; c < 3; ++c) {
                 const host::SpanSetup s = host::setup_span(core, sp.ends, strength * tint[c], m.n, sp.l, rule);
                 if (c == 0) r.counters.add(s.flags);
-                px = drv ? drv->span(s.regs) : core.span(s.regs);
+                px = drv->span(s.regs);
+                if (px.size() != size_t(sp.l) + 1) throw std::runtime_error("shade_specular: the core gave " +
+                    std::to_string(px.size()) + " pixels for a span of " + std::to_string(sp.l + 1));
                 ++r.core_runs;
                 for (uint32_t i = 0; i <= sp.l; ++i) {
                     if (f.visible(sp, i)) r.spec[3 * (row + i) + c] = float(core.out_value(px[i]));
@@ -119,7 +129,9 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode
             switch (model) {
                 case SpecModel::rtl:
                 case SpecModel::golden:
-                    px = drv ? drv->span(s.regs) : core.span(s.regs);
+                    px = drv->span(s.regs);
+                    if (px.size() != size_t(sp.l) + 1) throw std::runtime_error("shade_specular: the core gave " +
+                        std::to_string(px.size()) + " pixels for a span of " + std::to_string(sp.l + 1));
                     ++r.core_runs;
                     for (uint32_t i = 0; i <= sp.l; ++i) val[i] = core.out_value(px[i]);
                     break;
@@ -134,8 +146,7 @@ SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel model, RgbMode
                 case SpecModel::host:
                     for (uint32_t i = 0; i <= sp.l; ++i) val[i] = s.value(i);
                     break;
-                case SpecModel::shader:
-                    throw std::invalid_argument("the shader model runs through spec::shade_shader (sim/setup)");
+                case SpecModel::shader: break;   // refused above
             }
             for (uint32_t i = 0; i <= sp.l; ++i) {
                 if (!f.visible(sp, i)) continue;

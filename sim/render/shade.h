@@ -17,19 +17,21 @@
 
 #include "image.h"
 #include "raster.h"
+#include "span_core.h"
+#include "span_ends_core.h"
 #include "span_host.h"
 
 namespace spec {
 namespace render {
 
 enum class SpecModel {
-    rtl,        // the Verilated spec_unit, span by span, through its ports
+    rtl,        // a core that runs spans: the Verilated spec_unit through its ports (the caller passes it)
     golden,     // the bit-exact C++ model of spec_unit (same pixels as rtl, faster)
     ref,        // double precision, exact Blinn-Phong for the interpolated vectors (per pixel slerp of N, H)
     prototype,  // Abbas, Szirmay-Kalos, Horvath: C cos^2(sqrt(n/2) zeta), 0 past pi/2, in double
     host,       // the host's angles with exact cos^n in double: the host's own share of the error
-    shader,     // the Verilated spec_shader: the span's end vectors in, setup and core in the RTL (sim/setup,
-                // spec::shade_shader; shade_specular does not run it)
+    shader,     // a core that does the setup itself (SpanEndsCore: the Verilated spec_shader, sim/setup): the
+                // span's end vectors in, setup and core in the RTL
 };
 const char* model_name(SpecModel m);
 // Throws InputError for an unknown name.
@@ -57,11 +59,27 @@ struct SpecRun {
 };
 
 using Progress = std::function<void(size_t done, size_t total)>;
-// mode: what ROM 9 holds for the rtl and golden models (patent: sqrt(n/k), Fig. 10; tuned: minimax scale and
-// table, docs/tuned.md); the other models do not use the core.
+// The specular term of every span. core: what runs the spans of SpecModel::rtl and SpecModel::golden (a
+// SpanCore: the Verilated spec_unit of sim/rtl, spec_stream, the bit-exact model); the renderer never builds
+// a Verilated model itself. SpecModel::rtl needs one (std::invalid_argument without); golden without one
+// uses the bit-exact model (ModelCore). mode: what ROM 9 holds (patent: sqrt(n/k), Fig. 10; tuned: minimax
+// scale and table, docs/tuned.md) - the format the host quantizes for and the core's output is read in; it
+// must be the core's. The other models do not use a core.
+SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel m, SpanCore* core, RgbMode rgb,
+                       host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
+                       Mode mode = Mode::patent);
+// The same without a core (every model but rtl).
 SpecRun shade_specular(const Scene& sc, const Frame& f, SpecModel m, RgbMode rgb,
                        host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
                        Mode mode = Mode::patent);
+
+// SpecModel::shader: the specular term of every span through a core that takes the span's ends (spec_shader),
+// in batches of `batch` spans streamed back to back; nothing per span is computed here beyond what the
+// rasterizer interpolated. The counters count the core's flags; core_cycles are its clock cycles.
+// RgbMode::per_channel runs every span three times with the strength times each channel's tint (shade_ends.cpp).
+SpecRun shade_specular(const Scene& sc, const Frame& f, SpanEndsCore& core, RgbMode rgb,
+                       host::GammaRule rule = host::GammaRule::patent, const Progress& progress = {},
+                       size_t batch = 4096);
 
 // base + spec, clamped to [0, 1], rounded to 8 bits.
 Image compose(const Shading& s, const SpecRun& r);

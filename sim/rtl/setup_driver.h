@@ -1,5 +1,6 @@
 // setup_driver.h - the span-ends beat of spec_setup / spec_shader (docs/setup.md) packed in C++, and a
-// driver for the Verilated spec_setup_pipe (the fully pipelined arithmetic, no handshake).
+// driver for the Verilated spec_setup_pipe (the fully pipelined arithmetic, no handshake), spec_setup and
+// spec_shader (AXI4-Stream, random stalls), all on the one Verilated-harness template (harness.h).
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "harness.h"
 #include "setup_model.h"
 #include "setup_params.h"
 #include "spec_params.h"
@@ -78,20 +80,11 @@ struct SetupOut {
 template <class V>
 class SetupPipeDriver {
 public:
-    SetupPipeDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
-        top_->clk = 0;
-        top_->rst = 1;
-        top_->in_valid = 0;
-        top_->eval();
-        step();
-        top_->rst = 0;
+    SetupPipeDriver() : h_(active_high<V>([](V& v) -> CData& { return v.rst; })) {
+        h_->in_valid = 0;
+        h_.reset();
     }
-    ~SetupPipeDriver() {
-        Verilated::threadContextp(ctx_.get());
-        top_->final();
-        top_.reset();
-    }
-    V& top() { return *top_; }
+    V& top() { return h_.top(); }
     // One clock with the span (or none) at the input.
     void push(const SetupInput* in) {
         top_->in_valid = in != nullptr;
@@ -114,10 +107,7 @@ public:
 
 private:
     void step() {
-        top_->clk = 1;
-        top_->eval();
-        top_->clk = 0;
-        top_->eval();
+        h_.tick();
         if (top_->out_valid) {
             SetupOut o;
             o.regs.c = top_->out_c;
@@ -129,12 +119,8 @@ private:
             out_.push_back(o);
         }
     }
-    static VerilatedContext* make_current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
-    }
-    std::unique_ptr<VerilatedContext> ctx_;
-    std::unique_ptr<V> top_;
+    Harness<V> h_;
+    V* const top_ = &h_.top();
     std::vector<SetupOut> out_;
 };
 
@@ -143,33 +129,17 @@ private:
 template <class V>
 class SetupStreamDriver {
 public:
-    SetupStreamDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
-        top_->clk = 0;
-        top_->s_axis_tvalid = 0;
-        top_->m_axis_tready = 1;
-        top_->rst_n = 1;
-        top_->eval();
+    SetupStreamDriver() : h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
+        h_->s_axis_tvalid = 0;
+        h_->m_axis_tready = 1;
         reset();
     }
-    ~SetupStreamDriver() {
-        Verilated::threadContextp(ctx_.get());
-        top_->final();
-        top_.reset();
-    }
-    V& top() { return *top_; }
-    uint64_t cycle() const { return cycle_; }
-    void reset() {
-        top_->rst_n = 0;
-        step();
-        top_->rst_n = 1;
-    }
-    void step() {
-        top_->clk = 1;
-        top_->eval();
-        top_->clk = 0;
-        top_->eval();
-        ++cycle_;
-    }
+    V& top() { return h_.top(); }
+    Harness<V>& harness() { return h_; }   // e.g. opentrace for a waveform
+    uint64_t cycle() const { return h_.cycle(); }
+    // rst_n low for one clock
+    void reset() { h_.reset(); }
+    void step() { h_.tick(); }
     // Sends the spans (offer / ready: probabilities per cycle) and returns the descriptors in order.
     // `on_cycle` is called each cycle after the inputs are set, before the clock edge.
     std::vector<SetupOut> run(const std::vector<SetupInput>& spans, double offer_p, double ready_p, std::mt19937_64& rng,
@@ -209,13 +179,8 @@ public:
     }
 
 private:
-    static VerilatedContext* make_current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
-    }
-    std::unique_ptr<VerilatedContext> ctx_;
-    std::unique_ptr<V> top_;
-    uint64_t cycle_ = 0;
+    Harness<V> h_;
+    V* const top_ = &h_.top();
 };
 
 // A pixel out of spec_shader.
@@ -229,33 +194,17 @@ struct ShaderPixel {
 template <class V>
 class ShaderDriver {
 public:
-    ShaderDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
-        top_->clk = 0;
-        top_->s_axis_tvalid = 0;
-        top_->m_axis_tready = 1;
-        top_->rst_n = 1;
-        top_->eval();
+    ShaderDriver() : h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
+        h_->s_axis_tvalid = 0;
+        h_->m_axis_tready = 1;
         reset();
     }
-    ~ShaderDriver() {
-        Verilated::threadContextp(ctx_.get());
-        top_->final();
-        top_.reset();
-    }
-    V& top() { return *top_; }
-    uint64_t cycle() const { return cycle_; }
-    void reset() {
-        top_->rst_n = 0;
-        step();
-        top_->rst_n = 1;
-    }
-    void step() {
-        top_->clk = 1;
-        top_->eval();
-        top_->clk = 0;
-        top_->eval();
-        ++cycle_;
-    }
+    V& top() { return h_.top(); }
+    Harness<V>& harness() { return h_; }   // e.g. opentrace for a waveform
+    uint64_t cycle() const { return h_.cycle(); }
+    // rst_n low for one clock
+    void reset() { h_.reset(); }
+    void step() { h_.tick(); }
     // Sends the spans and returns every pixel in order (sum of l + 1). `on_cycle`: called each cycle after the
     // inputs are set, before the edge.
     std::vector<ShaderPixel> run(const std::vector<SetupInput>& spans, double offer_p, double ready_p,
@@ -297,13 +246,8 @@ public:
     }
 
 private:
-    static VerilatedContext* make_current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
-    }
-    std::unique_ptr<VerilatedContext> ctx_;
-    std::unique_ptr<V> top_;
-    uint64_t cycle_ = 0;
+    Harness<V> h_;
+    V* const top_ = &h_.top();
 };
 
 }  // namespace spec

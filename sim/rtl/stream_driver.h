@@ -1,8 +1,7 @@
-// stream_driver.h - drives a Verilated spec_stream through its AXI4-Stream ports.
+// stream_driver.h - drives a Verilated spec_stream through its AXI4-Stream ports (on the harness, harness.h).
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -10,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "harness.h"
+#include "span_core.h"
 #include "spec_model.h"
 #include "spec_params.h"
 #include "verilated.h"
@@ -64,58 +65,62 @@ struct Stalls {
     double out_ready = 1.0;
 };
 
+// What run() throws when the core breaks the stream's contract: a pixel more than the spans asked for, or
+// m_axis_tlast on the wrong pixel.
+struct StreamError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 template <class V>
 class StreamDriver {
 public:
-    // Verilator 5.006 registers and erases a model's scopes in the *thread's* current context, so it is
-    // set to this model's context around construction and destruction (several models share a thread).
-    StreamDriver() : ctx_(make_current(new VerilatedContext)), top_(new V(ctx_.get())) {
+    // Cycles run() keeps the sink ready after the last expected pixel, watching for pixels nobody asked for:
+    // more than the core's latency from an accepted descriptor to its first pixel (20, 22 with INTERP = 1).
+    static constexpr int kDrainCycles = 64;
+
+    StreamDriver() : h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
         idle();
-        top_->clk = 0;
-        top_->eval();
+        h_->eval();
         reset();
     }
-    ~StreamDriver() {
-        Verilated::threadContextp(ctx_.get());
-        top_->final();
-        top_.reset();
-    }
-    V& top() { return *top_; }
-    uint64_t cycle() const { return cycle_; }
+    V& top() { return h_.top(); }
+    Harness<V>& harness() { return h_; }
+    uint64_t cycle() const { return h_.cycle(); }
     // Descriptors with every ignored bit set (docs/stream.md: "the bits between the fields are ignored").
     void set_ignored_bits(bool ones) { ignored_ones_ = ones; }
 
-    void reset() {
-        top_->rst_n = 0;
-        step();
-        top_->rst_n = 1;
-    }
+    void reset() { h_.reset(); }
     // One clock; afterwards the outputs show the next cycle.
-    void step() {
-        top_->clk = 1;
-        top_->eval();
-        top_->clk = 0;
-        top_->eval();
-        ++cycle_;
-    }
-    // Runs the spans through, with random stalls on both sides, and returns the pixels in order.
-    // `on_cycle` (optional) is called each cycle before the edge, after inputs are set.
+    void step() { h_.tick(); }
+
+    // Runs the spans through, with random stalls on both sides, and returns the pixels in order. After the
+    // last expected pixel the sink stays ready for kDrainCycles more cycles: a pixel in that time, or a
+    // pixel whose tlast is not where its span ends, throws StreamError. `on_cycle` (optional) is called
+    // each cycle before the edge, after the inputs are set.
     std::vector<StreamPixel> run(const std::vector<SpanRegs>& spans, const Stalls& st, std::mt19937_64& rng,
                                  uint64_t max_cycles = 0, const std::function<void(V&)>& on_cycle = {}) {
         size_t expect = 0;
-        for (const auto& s : spans) expect += size_t(s.len) + 1;
+        std::vector<size_t> span_end;  // index of each span's last pixel
+        for (const auto& s : spans) {
+            expect += size_t(s.len) + 1;
+            span_end.push_back(expect - 1);
+        }
         if (max_cycles == 0) max_cycles = 64 + expect * 64;
         std::bernoulli_distribution offer(st.in_valid), ready(st.out_ready);
         std::vector<StreamPixel> out;
         out.reserve(expect);
-        size_t next = 0;
+        size_t next = 0, span_of_next_pixel = 0;
         bool offering = false;
         uint64_t c = 0;
-        while (out.size() < expect || next < spans.size()) {
-            if (++c > max_cycles) throw std::runtime_error("spec_stream: no progress (deadlock?)");
+        int drained = 0;
+        V& t = h_.top();
+        while (drained < kDrainCycles) {
+            const bool all_out = out.size() >= expect && next >= spans.size();
+            if (all_out) ++drained;
+            else if (++c > max_cycles) throw std::runtime_error("spec_stream: no progress (deadlock?)");
             // AXI source: once valid is raised it stays until accepted
             if (!offering && next < spans.size() && offer(rng)) offering = true;
-            top_->s_axis_tvalid = offering;
+            t.s_axis_tvalid = offering;
             if (offering) {
                 uint32_t w[kDescWords];
                 pack_descriptor(spans[next], w);
@@ -124,38 +129,66 @@ public:
                     ignored_mask(m);
                     for (int i = 0; i < kDescWords; ++i) w[i] |= m[i];
                 }
-                for (int i = 0; i < kDescWords; ++i) top_->s_axis_tdata[i] = w[i];
+                for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
             }
-            top_->m_axis_tready = ready(rng);
-            top_->eval();
-            if (on_cycle) on_cycle(*top_);
-            const bool in_fire = top_->s_axis_tvalid && top_->s_axis_tready;
-            const bool out_fire = top_->m_axis_tvalid && top_->m_axis_tready;
-            if (out_fire) out.push_back({top_->m_axis_tdata, top_->m_axis_tlast != 0});
+            t.m_axis_tready = all_out ? 1 : ready(rng);
+            t.eval();
+            if (on_cycle) on_cycle(t);
+            const bool in_fire = t.s_axis_tvalid && t.s_axis_tready;
+            const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
+            if (out_fire) {
+                const size_t k = out.size();
+                const bool last = t.m_axis_tlast != 0;
+                if (k >= expect) {
+                    throw StreamError("spec_stream: an extra pixel (" + std::to_string(t.m_axis_tdata) +
+                                      (last ? ", tlast" : "") + ") after the " + std::to_string(expect) +
+                                      " the spans asked for");
+                }
+                while (span_end[span_of_next_pixel] < k) ++span_of_next_pixel;
+                const bool want_last = span_end[span_of_next_pixel] == k;
+                if (last != want_last) {
+                    throw StreamError("spec_stream: pixel " + std::to_string(k) + " (span " +
+                                      std::to_string(span_of_next_pixel) + ") has tlast = " + (last ? "1" : "0"));
+                }
+                out.push_back({t.m_axis_tdata, last});
+            }
             step();
             if (in_fire) {
                 offering = false;
                 ++next;
             }
         }
+        t.s_axis_tvalid = 0;
         return out;
     }
 
 private:
-    static VerilatedContext* make_current(VerilatedContext* c) {
-        Verilated::threadContextp(c);
-        return c;
-    }
     void idle() {
-        top_->rst_n = 1;
-        top_->s_axis_tvalid = 0;
-        top_->m_axis_tready = 1;
-        for (int i = 0; i < kDescWords; ++i) top_->s_axis_tdata[i] = 0;
+        V& t = h_.top();
+        t.s_axis_tvalid = 0;
+        t.m_axis_tready = 1;
+        for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = 0;
     }
-    std::unique_ptr<VerilatedContext> ctx_;  // heap-allocated, destroyed after the model
-    std::unique_ptr<V> top_;
-    uint64_t cycle_ = 0;
+    Harness<V> h_;
     bool ignored_ones_ = false;
+};
+
+// spec_stream as a SpanCore: one span at a time, no stalls (specsim span --model stream, the renderer's tests).
+// cycle() counts every clock simulated, the drain after each span (kDrainCycles) included.
+template <class V>
+class StreamCore : public SpanCore {
+public:
+    StreamCore() : rng_(1) {}
+    std::vector<uint32_t> span(const SpanRegs& r) override {
+        std::vector<uint32_t> px;
+        for (const StreamPixel& p : d_.run({r}, Stalls{}, rng_)) px.push_back(p.value);
+        return px;
+    }
+    uint64_t cycle() const override { return d_.cycle(); }
+
+private:
+    StreamDriver<V> d_;
+    std::mt19937_64 rng_;
 };
 
 }  // namespace spec

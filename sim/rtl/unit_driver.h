@@ -7,12 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "span_core.h"
 #include "spec_model.h"
 
 class Vspec_unit;
 class Vspec_unit_tuned;
-class VerilatedContext;
-class VerilatedVcdC;
+
+namespace spec {
+template <class V>
+class Harness;
+}
 
 namespace spec {
 
@@ -22,16 +26,6 @@ struct CtrlSignals {
     bool d30, d31, d32, d33;
     bool busy, valid;
     uint32_t intensity;
-};
-
-// What the renderer and specsim need from a core that runs spans, whichever configuration was Verilated.
-class SpanCore {
-public:
-    virtual ~SpanCore() = default;
-    // Writes registers 1..4 and counter 5, pulses Start, returns the l + 1 pixels.
-    virtual std::vector<uint32_t> span(const SpanRegs& r) = 0;
-    // Clock cycles simulated so far.
-    virtual uint64_t cycle() const = 0;
 };
 
 // V: the Verilated spec_unit class (Vspec_unit: the patent's default; Vspec_unit_tuned: tuned mode).
@@ -45,7 +39,11 @@ public:
     UnitDriverT(const UnitDriverT&) = delete;
     UnitDriverT& operator=(const UnitDriverT&) = delete;
 
-    V& top() { return *top_; }
+    V& top();
+    // The harness under the driver (clock, init_n, waveform).
+    Harness<V>& harness() { return *h_; }
+    // A waveform of everything that follows (the model is Verilated with TRACE).
+    void opentrace(const std::string& vcd_path);
     // One clock: the inputs as set now are sampled at the rising edge; afterwards the outputs show the
     // next cycle. Every input is returned to its idle value (strobes 0, init_n 1, len_load_n 1) after it.
     void step();
@@ -61,17 +59,13 @@ public:
     std::vector<uint32_t> span(const SpanRegs& r) override { write(r); return run(); }
 
     CtrlSignals signals() const;
-    uint64_t cycle() const override { return cycle_; }
+    uint64_t cycle() const override;
     // Called after every step() with the signals of the new cycle.
     std::function<void(uint64_t cycle, const CtrlSignals&)> observer;
 
 private:
     void idle_inputs();
-    std::unique_ptr<VerilatedContext> ctx_;
-    std::unique_ptr<V> top_;
-    std::unique_ptr<VerilatedVcdC> vcd_;
-    uint64_t cycle_ = 0;
-    uint64_t time_ = 0;
+    std::unique_ptr<Harness<V>> h_;  // the model, its clock, init_n and the waveform (harness.h)
 };
 
 using UnitDriver = UnitDriverT<Vspec_unit>;              // the patent's configuration (rom/)

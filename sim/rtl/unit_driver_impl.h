@@ -4,97 +4,90 @@
 
 #include <stdexcept>
 
+#include "harness.h"
 #include "unit_driver.h"
-#include "verilated.h"
-#include "verilated_vcd_c.h"
 
 namespace spec {
 
 template <class V>
-UnitDriverT<V>::UnitDriverT(const std::string& vcd_path) : ctx_(new VerilatedContext) {
-    // Verilator 5.006 registers and erases a model's scopes in the thread's current context: make it ours
-    // around construction and destruction (several models share a thread in the tests).
-    Verilated::threadContextp(ctx_.get());
-    ctx_->traceEverOn(!vcd_path.empty());
-    top_.reset(new V(ctx_.get(), "spec_unit"));
+UnitDriverT<V>::UnitDriverT(const std::string& vcd_path)
+    : h_(new Harness<V>(active_low<V>([](V& v) -> CData& { return v.init_n; }), "spec_unit")) {
     idle_inputs();
-    top_->clk = 0;
-    top_->eval();
-    if (!vcd_path.empty()) {
-        vcd_.reset(new VerilatedVcdC);
-        top_->trace(vcd_.get(), 99);
-        vcd_->open(vcd_path.c_str());
-        if (!vcd_->isOpen()) throw std::runtime_error("cannot write " + vcd_path);
-        vcd_->dump(time_);
-    }
+    h_->top().eval();
+    if (!vcd_path.empty()) opentrace(vcd_path);
     init();
 }
 
 template <class V>
-UnitDriverT<V>::~UnitDriverT() {
-    Verilated::threadContextp(ctx_.get());
-    if (vcd_) vcd_->close();
-    top_->final();
-    vcd_.reset();
-    top_.reset();
+UnitDriverT<V>::~UnitDriverT() = default;
+
+template <class V>
+V& UnitDriverT<V>::top() {
+    return h_->top();
+}
+
+template <class V>
+uint64_t UnitDriverT<V>::cycle() const {
+    return h_->cycle();
+}
+
+template <class V>
+void UnitDriverT<V>::opentrace(const std::string& vcd_path) {
+    h_->opentrace(vcd_path);
 }
 
 template <class V>
 void UnitDriverT<V>::idle_inputs() {
-    top_->init_n = 1;
-    top_->start = 0;
-    top_->c_we = 0;
-    top_->dzeta_we = 0;
-    top_->zeta0_we = 0;
-    top_->n_we = 0;
-    top_->len_load_n = 1;
+    V& t = h_->top();
+    t.init_n = 1;
+    t.start = 0;
+    t.c_we = 0;
+    t.dzeta_we = 0;
+    t.zeta0_we = 0;
+    t.n_we = 0;
+    t.len_load_n = 1;
 }
 
 template <class V>
 void UnitDriverT<V>::step() {
-    top_->clk = 1;
-    top_->eval();
-    time_ += 5;
-    if (vcd_) vcd_->dump(time_);
+    h_->rise();
     idle_inputs();
-    top_->clk = 0;
-    top_->eval();
-    time_ += 5;
-    if (vcd_) vcd_->dump(time_);
-    ++cycle_;
-    if (observer) observer(cycle_, signals());
+    h_->fall();
+    if (observer) observer(h_->cycle(), signals());
 }
 
 template <class V>
 void UnitDriverT<V>::init() {
-    top_->init_n = 0;
+    h_->top().init_n = 0;
     step();
 }
 
 template <class V>
 void UnitDriverT<V>::write(const SpanRegs& r) {
-    top_->c_i = r.c;
-    top_->c_we = 1;
-    top_->dzeta_i = static_cast<uint32_t>(r.dzeta);
-    top_->dzeta_we = 1;
-    top_->zeta0_i = static_cast<uint32_t>(r.zeta0);
-    top_->zeta0_we = 1;
-    top_->n_i = r.n;
-    top_->n_we = 1;
-    top_->len_i = r.len;
-    top_->len_load_n = 0;
+    V& t = h_->top();
+    t.c_i = r.c;
+    t.c_we = 1;
+    t.dzeta_i = static_cast<uint32_t>(r.dzeta);
+    t.dzeta_we = 1;
+    t.zeta0_i = static_cast<uint32_t>(r.zeta0);
+    t.zeta0_we = 1;
+    t.n_i = r.n;
+    t.n_we = 1;
+    t.len_i = r.len;
+    t.len_load_n = 0;
     step();
 }
 
 template <class V>
 std::vector<uint32_t> UnitDriverT<V>::run(uint64_t max_cycles) {
     if (max_cycles == 0) max_cycles = 2 * (uint64_t(1) << 17) + 64;
+    V& t = h_->top();
     std::vector<uint32_t> px;
-    top_->start = 1;
+    t.start = 1;
     step();
-    for (uint64_t c = 0; top_->busy_o; ++c) {
+    for (uint64_t c = 0; t.busy_o; ++c) {
         if (c > max_cycles) throw std::runtime_error("spec_unit: busy_o did not fall");
-        if (top_->valid_o) px.push_back(top_->intensity_o);
+        if (t.valid_o) px.push_back(t.intensity_o);
         step();
     }
     return px;
@@ -102,7 +95,8 @@ std::vector<uint32_t> UnitDriverT<V>::run(uint64_t max_cycles) {
 
 template <class V>
 CtrlSignals UnitDriverT<V>::signals() const {
-    const auto* r = top_->rootp;
+    const V& t = h_->top();
+    const auto* r = t.rootp;
     CtrlSignals s;
     s.s28 = r->spec_unit__DOT__sig28;
     s.s34 = r->spec_unit__DOT__sig34;
@@ -113,10 +107,10 @@ CtrlSignals UnitDriverT<V>::signals() const {
     s.d31 = r->spec_unit__DOT__d31;
     s.d32 = r->spec_unit__DOT__d32;
     s.d33 = r->spec_unit__DOT__d33;
-    s.busy = top_->busy_o;
-    s.valid = top_->valid_o;
-    s.s29 = top_->valid_o;
-    s.intensity = top_->intensity_o;
+    s.busy = t.busy_o;
+    s.valid = t.valid_o;
+    s.s29 = t.valid_o;
+    s.intensity = t.intensity_o;
     return s;
 }
 

@@ -1,24 +1,29 @@
-// setup_render.h - the renderer's specular pass through the Verilated spec_shader (specsim render --model
-// shader): per span, only the end vectors the rasterizer interpolated, quantized into the span-ends beat
-// (Q1.14, Is*ks UQ1.15); setup and core run in the RTL.
+// setup_render.h - spec_shader as the renderer's SpanEndsCore (sim/render/span_ends_core.h; specsim render
+// --model shader): each span's ends, as the rasterizer interpolated them, quantized into the span-ends beat
+// (Q1.14 components, Is*ks UQ1.15 saturated to the format's largest code); setup and core run in the RTL (or in
+// their bit-exact models).
 #pragma once
+
+#include <memory>
 
 #include "setup_rtl.h"
 #include "shade.h"
 
 namespace spec {
 
-// The span-ends beat of a rasterized span: N and H at its ends, Is*ks (saturated to the format's largest
-// code), n, l, the gamma rule.
-SetupInput span_beat(const SetupFormat& sf, const render::Span& sp, double strength, unsigned n, host::GammaRule rule);
+// The span-ends beat of a span's ends: N and H quantized, Is*ks (saturated to the format's largest code), n, l,
+// the gamma rule.
+SetupInput span_beat(const SetupFormat& sf, const SpanEndsJob& job);
 
-// The specular term of every span through spec_shader in configuration c (spans streamed back to back, the
-// sink always ready). The counters count the shader's flags (its bits 0-5 are the host's); core_cycles are
-// the shader's clock cycles. rgb = per_channel runs every span three times with Is*ks times each channel's
-// light colour x specular colour.
+// The Verilated spec_shader of configuration c as a SpanEndsCore (spans streamed back to back, the sink
+// always ready; cycle() counts its clocks).
+std::unique_ptr<SpanEndsCore> make_shader_core(SetupConfig c);
+// The same through the bit-exact models (SetupModel, then the core's Model): what the RTL must give.
+std::unique_ptr<SpanEndsCore> make_shader_models(SetupConfig c);
+
+// The renderer's specular pass through them (render::shade_specular with the core above).
 render::SpecRun shade_shader(const render::Scene& sc, const render::Frame& f, SetupConfig c, render::RgbMode rgb,
                              host::GammaRule rule, const render::Progress& progress = {});
-// The same through the bit-exact models (SetupModel, then the core's Model): what the RTL must give.
 render::SpecRun shade_shader_models(const render::Scene& sc, const render::Frame& f, SetupConfig c, render::RgbMode rgb,
                                     host::GammaRule rule);
 

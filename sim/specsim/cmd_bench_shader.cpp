@@ -47,7 +47,7 @@ std::vector<SetupInput> scene_beats(int w, int h) {
     v.reserve(f.spans.size());
     for (const render::Span& sp : f.spans) {
         const render::Material& m = sc.objects[sp.obj].mat;
-        v.push_back(span_beat(sf, sp, sc.light.intensity * m.ks, m.n, host::GammaRule::patent));
+        v.push_back(span_beat(sf, {sp.ends, sc.light.intensity * m.ks, m.n, sp.l, host::GammaRule::patent}));
     }
     return v;
 }

@@ -2,11 +2,13 @@
 #include "cmd_highlight.h"
 
 #include <cstdio>
+#include <memory>
 
 #include "cli.h"
 #include "methods_usage.h"
 #include "methods_util.h"
 #include "scenes.h"
+#include "unit_driver.h"
 
 namespace spec {
 
@@ -49,12 +51,14 @@ int cmd_highlight(int argc, char** argv) {
     if (methods_cli::wants_help(argc, argv, kHighlightUsage)) return 0;
     const HighlightOptions opt = parse_highlight(argc, argv);
     if (!opt.out_dir.empty()) methods_cli::make_dir(opt.out_dir);
+    // the renderer takes its core (sim/model/span_core.h): the Verilated spec_unit for --model rtl
+    const std::unique_ptr<SpanCore> unit = opt.model == render::SpecModel::rtl ? make_unit_driver(Mode::patent) : nullptr;
     std::printf("Companion paper A (seeds/004): the highlight-in-triangle test and the --cull-specular bound. Scenes\n"
                 "at %dx%d through the %s core.\n\n",
                 opt.size, opt.size, opt.model == render::SpecModel::rtl ? "Verilated (rtl)" : "bit-exact (golden)");
     std::vector<methods::SceneEval> ev;
     for (const auto& name : opt.scenes) {
-        ev.push_back(methods::evaluate_scene(name, methods::methods_scene(name), opt.size, opt.model));
+        ev.push_back(methods::evaluate_scene(name, methods::methods_scene(name), opt.size, opt.model, unit.get()));
         if (!opt.out_dir.empty()) write_highlight_picture(ev.back(), opt.out_dir);
         ev.back().image = render::Image();
     }
@@ -65,7 +69,8 @@ int cmd_highlight(int argc, char** argv) {
             if (!coarse) continue;
             render::Scene sc = methods::methods_scene(name);
             methods::set_exponent(&sc, opt.coarse_n);
-            ev.push_back(methods::evaluate_scene(name + " n=" + std::to_string(opt.coarse_n), sc, opt.size, opt.model));
+            ev.push_back(methods::evaluate_scene(name + " n=" + std::to_string(opt.coarse_n), sc, opt.size, opt.model,
+                                                 unit.get()));
             ev.back().image = render::Image();
         }
     }
