@@ -2,7 +2,8 @@
 // draws the scene at half the display's size (FB_W x FB_H) into frame_store as fast as the shader allows (the
 // UP5K's small spec_setup takes one span at a time, far too slow to race the beam), and the scanout shows the
 // buffer pixel-doubled at the display's rate. The same raster, span finder, shader passes, light and colour
-// as board_core; the light moves with every *rendered* frame.
+// as board_core, except that the colour is made after the write queue by compose_seq (one channel at a time, no
+// multiplier: the UP5K's DSPs are the shader's); the light moves with every *rendered* frame.
 //
 // One clock domain, pix_ce every other cycle (the scanout reads a group of 4 buffer pixels, 3 words, in 16
 // clocks). Rendering frame r: light_gen computes frame r's light; at the start of the next displayed frame the
