@@ -90,9 +90,13 @@ BOARDS = {
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
         "freq_mhz": {"640x480": 50.0, "1280x720": 74.29},
-        "cells": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"]},
-        "limits": {"25k": {"lut": 24288, "bram": 56, "dsp": 28}, "45k": {"lut": 43848, "bram": 108, "dsp": 72},
-                   "85k": {"lut": 83640, "bram": 208, "dsp": 156}},
+        # an ECP5 slice half (TRELLIS_COMB) holds one LUT4 or half a CCU2C (two-bit carry cell): "comb" =
+        # LUT4 + 2 CCU2C is the least number of them the design needs, what its size is checked against
+        "cells": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"],
+                  "ccu2c": [r"CCU2C"]},
+        "derived": {"comb": lambda r: r["lut"] + 2 * r["ccu2c"]},
+        "limits": {"25k": {"comb": 24288, "bram": 56, "dsp": 28}, "45k": {"comb": 43848, "bram": 108, "dsp": 72},
+                   "85k": {"comb": 83640, "bram": 208, "dsp": 156}},
     },
 }
 
@@ -117,11 +121,8 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
 # its subtree. Blocks: the shader's parts and the board's modules; the rest is the top's glue.
-BLOCKS = [("spec_setup (small engine)", "spec_setup"), ("spec_stream", "spec_stream"),
-          ("spec_shader glue", "spec_shader"), ("sphere_spans", "sphere_spans"), ("light_gen", "light_gen"),
-          ("shade_passes", "shade_passes"), ("compose", "compose"), ("compose_seq", "compose_seq"),
-          ("frame_store", "frame_store"), ("line_buffer", "line_buffer"), ("video_timing", "video_timing"),
-          ("tmds", "tmds_encoder"), ("sync_fifo", "sync_fifo")]
+BLOCKS = ["spec_setup", "spec_stream", "spec_shader", "sphere_spans", "light_gen", "shade_passes", "compose",
+          "compose_seq", "frame_store", "line_buffer", "video_timing", "tmds_encoder", "sync_fifo"]
 
 
 def breakdown(stat_text, cells):
@@ -152,18 +153,33 @@ def breakdown(stat_text, cells):
         # the nearest block among itself and its ancestors
         cur = n
         while cur is not None:
-            if base(cur) in [b for _, b in BLOCKS]:
+            if base(cur) in BLOCKS:
                 return base(cur)
             cur = parent.get(cur)
-        return "board glue (top, board_core, PLL, I/O)"
+        return "top"   # the top level, board_core(_fb), PLL, I/O
     out = {}
     for n, c in own.items():
-        b = block_of(n)
-        label = next((lab for lab, bb in BLOCKS if bb == b), b)
-        t = out.setdefault(label, {k: 0 for k in c})
+        t = out.setdefault(block_of(n), {k: 0 for k in c})
         for k, v in c.items():
             t[k] += v
     return out
+
+
+SHADER = ("spec_setup", "spec_stream", "spec_shader")
+
+
+def breakdown_totals(b, cells_limit):
+    """The shader's blocks and the board's (the rest) summed; lc_min per block = its LUTs + the flip-flops that no
+    LUT can share a logic cell with (at best each LUT4 feeds one); setup_budget_lc = the logic cells left for
+    spec_setup when everything else takes its lc_min."""
+    lc = {n: c["lut"] + max(0, c["ff"] - c["lut"]) for n, c in b.items()}
+    tot = {}
+    for part, names in (("shader", [n for n in b if n in SHADER]), ("board", [n for n in b if n not in SHADER])):
+        t = {k: sum(b[n][k] for n in names) for k in ("lut", "ff", "carry", "bram", "dsp")}
+        t["lc_min"] = sum(lc[n] for n in names)
+        tot[part] = t
+    tot["setup_budget_lc"] = cells_limit - sum(v for n, v in lc.items() if n != "spec_setup")
+    return tot
 
 
 def nextpnr_clocks(report):
@@ -198,13 +214,17 @@ def synthesize(board, mode, args, tools, out):
     stat_text = open(os.path.join(ROOT, stat)).read()
     for k, pats in d["cells"].items():
         res[k] = count_cells(stat_text, pats)
+    for k, f in d.get("derived", {}).items():
+        res[k] = f(res)
     if args.breakdown:
         hstat = "%s/%s.hier.stat" % (rel, name)
         hier = synth.replace(" -json %s" % net, "") + " -noflatten"
         rc, _ = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, hstat, hier)],
                     "%s/%s.hier.yosys.log" % (rel, name))
         if rc == 0:
-            res["breakdown"] = breakdown(open(os.path.join(ROOT, hstat)).read(), d["cells"])
+            b = breakdown(open(os.path.join(ROOT, hstat)).read(), d["cells"])
+            res["breakdown"] = b
+            res["breakdown_totals"] = breakdown_totals(b, list(d["limits"][d["devices"][0]].values())[0])
     return res, net
 
 
