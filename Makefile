@@ -16,14 +16,16 @@
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
 #   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
-#   make tables   table sets and table sizes against ROM bits, both modes: docs/tables.md, docs/img/tables.png
+#   make tables   table sets and table sizes against ROM bits, both modes: docs/img/tables.png, and docs/tables.md
+#               (scripts/docgen.py's block; the ctest docs_current reruns it)
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
 #               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
 #   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
 #   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
 #   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
-#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two)
+#   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two),
+#                   LONG_SPANS (10^6) random and degenerate span ends through spec_setup / spec_shader
 #   make fuzz       libFuzzer on the parsers, the generator, the host, the OBJ reader, specsim span (clang),
 #                   FUZZ_TIME seconds per target (60)
 #   make test-asan  the whole ctest suite built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan)
@@ -42,8 +44,8 @@ RTL_SHADER_TOPS := $(basename $(notdir $(RTL_SHADER)))
 RTL_OTHER := $(filter-out $(RTL_CORE) $(RTL_SHADER),$(wildcard rtl/*.v))
 
 .PHONY: all deps configure build test ctest lint sim roms fig8 docs accuracy clean help bench bench-stream \
-        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-mutants deps-formal coverage \
-        test-long test-asan test-mutants fuzz deps-fuzz compare tables methods
+        bench-render bench-shader synth deps-synth fusesoc plots images formal formal-shader formal-mutants deps-formal coverage test-long \
+        test-asan test-mutants fuzz deps-fuzz compare tables methods
 
 all: build
 
@@ -84,6 +86,12 @@ lint: deps
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 \
 	        -GSCALE_FRAC=13 || exit 1; \
 	    echo "  $$top in the up5k configuration (INTERP = 1): clean"; \
+	done
+	@for lp in "2 0" "2 1" "4 0" "4 1"; do set -- $$lp; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 || exit 1; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 -GTBL_AW=8 \
+	        -GINTERP=1 -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1; \
+	    echo "  spec_stream with LANES = $$1, PACK = $$2 (default and up5k configurations): clean"; \
 	done
 	@for top in $(RTL_SHADER_TOPS); do \
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module $$top || exit 1; \
@@ -141,6 +149,8 @@ images: build
 	@mkdir -p docs/img
 	$(BUILD)/specsim render --scene default --size 320 --model rtl --quiet --out $(BUILD)/img_render.png \
 	    --panel docs/img/panel.png
+	$(BUILD)/specsim render --scene default --size 320 --model shader --quiet --out $(BUILD)/img_shader.png \
+	    --panel docs/img/shader_panel.png
 	$(BUILD)/specsim plots --out-dir $(BUILD)/img_plots
 	cp $(BUILD)/img_plots/fig5.png $(BUILD)/img_plots/fig9.png docs/img/
 	$(BUILD)/specsim highlight --scene default --samples 1000 --out-dir $(BUILD)/img_methods > /dev/null
@@ -174,23 +184,28 @@ compare: build
 tables: build
 	@mkdir -p docs/img
 	$(BUILD)/specsim tables --out-dir $(BUILD)/tables
-	cp $(BUILD)/tables/tables.md docs/tables.md
 	cp $(BUILD)/tables/tables.png docs/img/tables.png
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-render: build
-	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/specsim render-bench --scene default --size 512 --runs 5 --json $(BUILD)/bench/render.json
+	@mkdir -p docs/data && cp $(BUILD)/bench/render.json docs/data/bench_render.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 bench-stream: build
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/specsim bench-stream --runs 5 --json $(BUILD)/bench/stream.json
+	$(BUILD)/specsim bench-lanes --json $(BUILD)/bench/lanes.json
 	@mkdir -p docs/data && cp $(BUILD)/bench/stream.json docs/data/bench_stream.json
+	@cp $(BUILD)/bench/lanes.json docs/data/bench_lanes.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
 # spec_shader (issue 13, docs/setup.md): pixels per clock on the default scene's spans, small configuration's
 # spans per clock
 bench-shader: build
 	@mkdir -p $(BUILD)/bench
-	$(BUILD)/specsim bench-shader --json $(BUILD)/bench/shader.json
+	$(BUILD)/specsim bench-shader --json docs/data/bench_shader.json
 
 bench: bench-render bench-stream bench-shader
 
@@ -199,10 +214,26 @@ bench: bench-render bench-stream bench-shader
 deps-synth:
 	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
 
+# Every run places and routes with seeds 1-5 and reports the worst (and icetime's on the iCE40); the issue-14
+# runs (spec_stream, up5k configuration, LANES = 1, 2 on the UP5K, 1 and 4 on the ECP5) go to docs/data/synth.json, from which
+# docs/stream.md's table is made (make docs). SYNTH_RUNS picks other runs (syn/synth.py --runs).
+SYNTH_RUNS ?= ice40-up5k:spec_stream:up5k:1 ice40-up5k:spec_stream:up5k:2 ecp5-25f:spec_stream:up5k:1 \
+              ecp5-25f:spec_stream:up5k:4
 synth: build deps-synth
-	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_stream,spec_unit,parallax_iter \
-	    --configs up5k,default \
-	    --out $(BUILD)/synth --specrom $(BUILD)/specrom
+	@mkdir -p $(BUILD)/synth && rm -f $(BUILD)/synth/synth.json
+	@# rows of runs that cannot run here (no ECP5 tools) keep the committed figures
+	@if [ -f docs/data/synth.json ]; then cp docs/data/synth.json $(BUILD)/synth/synth.json; fi
+	@for r in $(SYNTH_RUNS); do \
+	    python3 syn/synth.py --runs $$r --seeds 1-5 --out $(BUILD)/synth --specrom $(BUILD)/specrom \
+	        --data $(BUILD)/synth/synth.json || exit 1; \
+	done
+	@mkdir -p docs/data && cp $(BUILD)/synth/synth.json docs/data/synth.json
+	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
+	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom
+	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
+	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1 --out $(BUILD)/synth \
+	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
+	python3 scripts/docgen.py --build $(BUILD) --update
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
 fusesoc: build deps-synth
@@ -210,6 +241,7 @@ fusesoc: build deps-synth
 
 # ---- Verification in depth (issue 5, docs/verification.md) ---------------------------------------------------
 LONG_PIXELS ?= 100000000
+LONG_SPANS ?= 1000000
 FUZZ_TIME ?= 60
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 # g++ 12 miscompiles UBSan's null check on a thread_local's address (Verilated::t_s, inlined from verilated.h):
@@ -222,13 +254,21 @@ deps-formal:
 	@scripts/deps.sh z3 python3
 
 formal: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal --data docs/data/formal.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal --data docs/data/formal.json
+
+# Only spec_setup's and spec_shader's proofs (issue 13; a few minutes): docs/data/formal_shader.json
+formal-shader: deps deps-formal configure
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader \
+	    --jobs spec_setup,spec_setup_count,spec_shader --data docs/data/formal_shader.json
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader-mut \
+	    --jobs spec_setup,spec_shader --mutants --data docs/data/formal_mutants_shader.json
 
 # The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
 formal-mutants: deps deps-formal configure
-	cmake --build $(BUILD) -j$(JOBS) --target specrom
-	python3 formal/formal.py --specrom $(BUILD)/specrom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
+	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
+	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
@@ -240,8 +280,8 @@ coverage: deps
 
 test-long: build
 	cmake --build $(BUILD) -j$(JOBS) --target spec_long
-	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_JSON=$(if $(filter 100000000,$(LONG_PIXELS)),docs/data/test_long.json) \
-	    $(BUILD)/spec_long
+	SPEC_LONG_PIXELS=$(LONG_PIXELS) SPEC_LONG_SPANS=$(LONG_SPANS) \
+	    SPEC_LONG_JSON=$(if $(filter 100000000,$(LONG_PIXELS)),docs/data/test_long.json) $(BUILD)/spec_long
 
 test-asan: deps
 	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS_GCC)" \
@@ -262,7 +302,7 @@ deps-fuzz:
 fuzz: deps deps-fuzz
 	cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DCMAKE_CXX_COMPILER=clang++ -DSPEC_FUZZ=ON \
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
-	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim))
+	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim setup specsim_setup))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)
 
 # ---- Reference designs on boards (issue 15, docs/boards.md) ----------------------------------------------------

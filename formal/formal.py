@@ -40,29 +40,62 @@ def core_files(rtl_dir):
     with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
         return [os.path.join(rtl_dir, line.strip()) for line in f if line.strip()]
 
+
+def shader_files(rtl_dir, exclude=()):
+    """spec_setup's and spec_shader's RTL: rtl/spec_shader.f, without the files a job replaces."""
+    with open(os.path.join(ROOT, "rtl", "spec_shader.f")) as f:
+        return [os.path.join(rtl_dir, line.strip()) for line in f if line.strip() and line.strip() not in exclude]
+
+
 JOBS = {
     "spec_unit": dict(
         core="spec_unit", wrapper="fv_spec_unit",
         expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
                 "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs", "start_q", "len_q"],
         depth=2, bmc=40, cover=48),
+    # spec_stream with LANES = 1, 2 (PACK = 1) and 4 (PACK = 0): bounded checks and covers only (no
+    # induction: the LANES core's internal invariants are not written; fv_spec_stream.v)
     "spec_stream": dict(
-        core="spec_stream", wrapper="fv_spec_stream",
-        expose=["head_v", "tail_v", "ready_q", "head_l", "head_single", "tail", "cur_v", "cur_cnt", "cur_last",
-                "v8", "u_dp.vs", "skid_v", "skid_last", "u_side8.g_regs.r*", "u_dp.u_last.g_regs.r*",
-                "ce", "take", "step", "o_load", "head_load"],
+        core="spec_stream", wrapper="fv_spec_stream", params={},
+        expose=["ce", "u_gen.tk", "u_gen.pl", "u_gen.room", "u_gen.prep_v"],
         # the datapath's pixel value is cut off and left free (every value possible): the properties are
         # about flow control, and without the multipliers, ROMs and the 32-bit accumulator z3 is much faster
         cut=["dp_out"],
-        depth=1, bmc=3, cover=40),
+        depth=None, bmc=32, cover=36),
+    # spec_setup (issue 13, docs/setup.md): its credits and descriptor FIFO around the arithmetic, which is left
+    # out (formal/fv_setup_pipe_stub.v: a 3-stage shift register passing n and l on); a 4-entry FIFO. The order
+    # of the descriptors (each the next accepted beat's) is a bounded proof (bmc): proving it by induction would
+    # need invariants over the FIFO's memory; the accounting (credits = spans in flight = where they are, no
+    # deadlock, AXI rules) is proved for every length by induction on the model without the order assertion
+    # (spec_setup_count, FV_COUNT_ONLY).
+    "spec_setup": dict(
+        core="spec_setup", wrapper="fv_spec_setup", shader=True, exclude=["spec_setup_pipe.v"],
+        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2},
+        expose=["g_pipe.cnt", "g_pipe.u_fifo.cm", "g_pipe.u_fifo.rv", "g_pipe.u_fifo.skid_v", "g_pipe.u_pipe.v"],
+        steps=["bmc", "cover"], depth=0, bmc=16, cover=24),
+    "spec_setup_count": dict(
+        core="spec_setup", wrapper="fv_spec_setup", shader=True, exclude=["spec_setup_pipe.v"],
+        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2}, defines=["FV_COUNT_ONLY"],
+        expose=["g_pipe.cnt", "g_pipe.u_fifo.cm", "g_pipe.u_fifo.rv", "g_pipe.u_fifo.skid_v", "g_pipe.u_pipe.v"],
+        steps=["induction"], depth=8, bmc=0, cover=0),
+    # spec_shader: the composition (flags FIFO, tuser, the gating of spec_stream's input) with the setup's
+    # arithmetic left out and the pixel value cut off; bounded (formal/fv_spec_shader.v)
+    "spec_shader": dict(
+        core="spec_shader", wrapper="fv_spec_shader", shader=True, exclude=["spec_setup_pipe.v"],
+        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
+        cut=["u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
 }
+for _lanes, _pack in ((2, 1), (4, 0)):
+    JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"],
+                                                                  params={"LANES": _lanes, "PACK": _pack})
 
 
 # Mutants (--mutants): small bugs put into a copy of rtl/; a bounded check of the named job (MUTANT_BMC
 # cycles deep) must fail on each, which shows that the properties can fail and what they catch. The one
 # equivalent change must pass (spec_unit's; for spec_stream a passing 24-cycle check takes z3 over ten
 # minutes, the failing ones 1-2 minutes each).
-MUTANT_BMC = {"spec_unit": 40, "spec_stream": 24}
+MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
+              "spec_shader": 34}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
@@ -80,16 +113,28 @@ MUTANTS = [
     ("spec_unit", "spec_ctrl.v", "gen40 <= ff39 & ~gen40;", "gen40 <= ~gen40;",
      "pulse generator free-running while idle (latency varies)"),
     ("spec_unit", "spec_ctrl.v", "if (sig37) begin", "if (sig37 && ff41) begin", "an equivalent change (must pass)"),
-    ("spec_stream", "spec_stream.v", "cur_last <= (cur_cnt == {{(L_W - 1) {1'b0}}, 1'b1});",
-     "cur_last <= (cur_cnt == {{(L_W - 2) {1'b0}}, 2'b10});", "tlast one pixel early"),
+    ("spec_stream", "spec_spangen.v", "wire r_last1 = (r_v & ~r_ntk) | r_last1_bc;",
+     "wire r_last1 = r_last1_bc;", "a span's last beat missed (spans run long)"),
     ("spec_stream", "spec_stream.v", "(out_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
      "the skid buffer drops a pixel on a stall"),
-    ("spec_stream", "spec_stream.v", "wire accept = s_axis_tvalid & ready_q;", "wire accept = s_axis_tvalid;",
+    ("spec_stream", "spec_spangen.v", "wire accept = s_axis_tvalid & ready_q;", "wire accept = s_axis_tvalid;",
      "a descriptor taken while tready is low"),
-    ("spec_stream", "spec_stream.v", "        if (o_load) begin\n            m_axis_tdata",
-     "        if (o_load | ~m_axis_tready) begin\n            m_axis_tdata", "tdata reloaded while stalled"),
+    ("spec_stream", "spec_stream.v", "end else if (o_load) begin\n            m_axis_tdata",
+     "end else if (o_load | ~m_axis_tready) begin\n            m_axis_tdata", "tdata reloaded while stalled"),
     ("spec_stream", "spec_stream.v", "            m_axis_tvalid <= 1'b0;\n            skid_v <= 1'b0;",
      "            m_axis_tvalid <= 1'b0;", "reset leaves the skid buffer full"),
+    ("spec_stream_l4", "spec_stream.v", "m_axis_tkeep <= skid_v ? skid_keep : out_v;",
+     "m_axis_tkeep <= skid_v ? skid_keep : {LANES{1'b1}};", "tkeep keeps every slot of a span's last beat"),
+    ("spec_setup", "spec_setup.v", "ready_q <= cnt_n < DEPTH;", "ready_q <= cnt_n <= DEPTH;",
+     "spec_setup: one credit more than the FIFO holds"),
+    ("spec_setup", "spec_setup_fifo.v", "if (~skid_v) skid_d <= rd;", "skid_d <= rd;",
+     "spec_setup: the skid buffer overwritten while full"),
+    ("spec_setup", "spec_setup_fifo.v", "wire re = ce && (cm != {(AW + 1) {1'b0}});", "wire re = (cm != {(AW + 1) {1'b0}});",
+     "spec_setup: the FIFO read while its read stage is held"),
+    ("spec_shader", "spec_shader.v", "else m_axis_tuser <= pop ? fmem[fr_next] : d_flags;",
+     "else m_axis_tuser <= pop ? fmem[fr] : d_flags;", "spec_shader: the finished span's flags kept on tuser"),
+    ("spec_shader", "spec_shader.v", "fspace <= fcnt_n < (1 << FLAGS_AW) - 1;", "fspace <= 1'b1;",
+     "spec_shader: the flags FIFO not full-checked"),
 ]
 
 
@@ -107,16 +152,21 @@ def tail(path, n=15):
 
 def build_model(job, name, work, yosys, rtl_dir):
     rtl = core_files(rtl_dir)
+    if job.get("shader"):
+        rtl += shader_files(rtl_dir, job.get("exclude", ())) + [os.path.join(ROOT, f) for f in job.get("extra", [])]
     script = [
         "read_verilog -defer -I rom " + " ".join(rtl),
-        "hierarchy -top " + job["core"],
+    ] + ["chparam -set %s %d %s" % (k, v, job["core"]) for k, v in job.get("chparam", {}).items()] + [
+        "hierarchy -top " + job["core"] + "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
         "proc",
         "flatten",
-        "expose " + " ".join("w:" + w for w in job["expose"]),
-    ] + (["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
+    ] + (["expose " + " ".join("w:" + w for w in job["expose"])] if job["expose"] else []) + (
+        ["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
         "rename %s fv_core_%s" % (job["core"], job["core"].split("_", 1)[1]),
-        "read_verilog -formal -I rom " + os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
-        "hierarchy -check -top " + job["wrapper"],
+        "read_verilog -formal -I rom " + "".join(" -D" + d for d in job.get("defines", [])) + " " +
+        os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
+        "hierarchy -check -top " + job["wrapper"] +
+        "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
         "proc",
         "flatten",
         "opt_clean",
@@ -195,6 +245,8 @@ def run_mutants(a, work):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
+    ap.add_argument("--setuprom", default=os.path.join(ROOT, "build", "setuprom"),
+                    help="spec_setup's generator (its header, for the spec_setup and spec_shader jobs)")
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "formal"))
     ap.add_argument("--jobs", default=",".join(JOBS))
     ap.add_argument("--yosys", default="yosys")
@@ -225,6 +277,10 @@ def main():
     if run([a.specrom, "--out", "rom"] + WIDTHS, os.path.join(work, "specrom.log"), work) != 0:
         print("formal: specrom failed:\n" + tail(os.path.join(work, "specrom.log")), file=sys.stderr)
         return 1
+    if any(JOBS[j].get("shader") for j in jobs):
+        if run([os.path.abspath(a.setuprom), "--out", "rom"], os.path.join(work, "setuprom.log"), work) != 0:
+            print("formal: setuprom failed:\n" + tail(os.path.join(work, "setuprom.log")), file=sys.stderr)
+            return 1
 
     if a.mutants:
         return run_mutants(a, work)
@@ -244,13 +300,14 @@ def main():
         steps = [
             ("bmc", "base case, %d cycles" % job["bmc"],
              base + ["-t", str(job["bmc"]), "--dump-vcd", name + "_bmc.vcd", smt]),
-            ("induction", "induction, k = %d" % job["depth"],
+            ("induction", "induction, k = %s" % job["depth"],
              base + ["-i", "-t", str(job["depth"]), "--dump-vcd", name + "_induction.vcd", smt]),
             ("cover", "covers within %d cycles" % job["cover"],
              base + ["-c", "-t", str(job["cover"]), "--dump-vcd", name + "_cover%.vcd", smt]),
         ]
         for step, what, cmd in steps:
-            if step not in a.steps.split(","):
+            if step not in a.steps.split(",") or step not in job.get("steps", [step]) or (
+                    step == "induction" and job["depth"] is None):
                 continue
             log = os.path.join(work, "%s_%s.log" % (name, step))
             t1 = time.time()

@@ -82,9 +82,13 @@ module spec_cordic_pass #(
                 wire signed [W-1:0] b = rb[i][k*W +: W];
                 wire signed [W-1:0] as = a >>> i;
                 wire signed [W-1:0] bs = b >>> i;
+                // one adder each, the direction folded into the operand (a - x = a + ~x + 1): a mux of two
+                // adders would double the carry chains
+                wire [W-1:0] bx = bs ^ {W{~pos}};
+                wire [W-1:0] ax = as ^ {W{pos}};
                 always @(posedge clk) begin
-                    qa[k*W +: W] <= pos ? a + bs : a - bs;
-                    qb[k*W +: W] <= pos ? b - as : b + as;
+                    qa[k*W +: W] <= a + bx + {{(W - 1) {1'b0}}, ~pos};   // pos: a + bs, else a - bs
+                    qb[k*W +: W] <= b + ax + {{(W - 1) {1'b0}}, pos};    // pos: b - as, else b + as
                 end
             end
             assign ra[i+1] = qa;
@@ -92,7 +96,8 @@ module spec_cordic_pass #(
             if (ANGLE != 0) begin : g_z
                 localparam signed [ZW-1:0] AT = ATAN[i*ZW +: ZW];
                 reg signed [ZW-1:0] qz;
-                always @(posedge clk) qz <= pos ? $signed(rz[i]) + AT : $signed(rz[i]) - AT;
+                wire [ZW-1:0] atx = AT ^ {ZW{~pos}};
+                always @(posedge clk) qz <= rz[i] + atx + {{(ZW - 1) {1'b0}}, ~pos};   // pos: + atan, else - atan
                 assign rz[i+1] = qz;
             end else begin : g_noz
                 assign rz[i+1] = sz;

@@ -9,9 +9,12 @@ spec_mul11.v
 spec_rom12.v
 spec_interp.v
 spec_mul13.v
+spec_ldreg.v
+spec_add.v
 spec_delay.v
 spec_datapath.v
 spec_saccum.v
 spec_ctrl.v
 spec_unit.v
+spec_spangen.v
 spec_stream.v

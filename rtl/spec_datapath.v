@@ -19,6 +19,10 @@ module spec_datapath #(
     parameter INTERP_FRAC = 10,
     parameter DELTA_W = 10,
     parameter TSEL_W = 2,
+    parameter PIPE = 0,    // 1: a register stage after each DSP block's output (spec_stream; 2 more clocks,
+                           //    3 with INTERP = 1)
+    parameter CTRL = 1,    // 0: no valid/last pipeline (out_valid, out_last, busy = 0; the output register
+                           //    loads with every ce): the caller tracks its pixels (spec_stream)
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,
@@ -38,16 +42,32 @@ module spec_datapath #(
     localparam TBL_DW = TBL_FRAC + 1;
     localparam WORD_W = TBL_DW + ((INTERP != 0) ? DELTA_W : 0);
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
-    localparam M11 = 7;                           // multiplier 11's stages
-    localparam VS = M11 + 2 + ((INTERP != 0) ? 2 : 0);   // the stage where the table value is ready
-    localparam LAT = VS + 3;                      // multiplier 13's three stages
+    localparam P = (PIPE != 0) ? 1 : 0;
+    localparam M11 = 7 + P;                       // multiplier 11's stages
+    localparam VS = M11 + 2 + ((INTERP != 0) ? 2 + P : 0);   // the stage where the table value is ready
+    localparam LAT = VS + 3 + P;                  // multiplier 13's stages
 
     // valid flags of every stage (stage s holds what entered s clocks of `ce` ago)
-    reg [LAT:1] vs;
-    always @(posedge clk) begin
-        if (rst) vs <= {LAT{1'b0}};
-        else if (ce) vs <= {vs[LAT-1:1], in_valid};
-    end
+    wire [LAT:1] vs;
+    wire out_en;   // multiplier 13's output register loads
+    generate
+        if (CTRL != 0) begin : g_ctrl
+            reg [LAT:1] vs_q;
+            always @(posedge clk) begin
+                if (rst) vs_q <= {LAT{1'b0}};
+                else if (ce) vs_q <= {vs_q[LAT-1:1], in_valid};
+            end
+            assign vs = vs_q;
+            assign out_en = ce & vs_q[LAT-1];
+            spec_delay #(.W(1), .N(LAT)) u_last (.clk(clk), .ce(ce), .d(in_last), .q(out_last));
+        end else begin : g_noctrl
+            assign vs = {LAT{1'b0}};
+            assign out_en = ce;
+            assign out_last = 1'b0;
+            wire unused_ctrl;
+            assign unused_ctrl = &{1'b0, in_valid, in_last};
+        end
+    endgenerate
 
     // multiplier 11 (stages 1..7)
     wire [TBL_AW-1:0] index11;
@@ -55,7 +75,7 @@ module spec_datapath #(
     wire zero11;
     spec_mul11 #(
         .ANG_W(ANG_W), .SCALE_W(SCALE_W), .PROD_FRAC(ANG_FRAC + SCALE_FRAC), .TBL_AW(TBL_AW),
-        .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC)
+        .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DSP_FF(P)
     ) u_mul11 (
         .clk(clk), .ce(ce), .angle(angle), .scale(scale), .index(index11), .frac(frac11), .zero(zero11)
     );
@@ -63,15 +83,19 @@ module spec_datapath #(
     // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
     wire [TSEL_W-1:0] tsel_rom;   // the table, delayed to meet multiplier 11's position
     spec_delay #(.W(TSEL_W), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel_rom));
-    wire [WORD_W-1:0] word12, word_q;
+    wire [WORD_W-1:0] word12;
     spec_rom12 #(
         .TBL_AW(TBL_AW), .TSEL_W(TSEL_W), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .DELTA_W(DELTA_W), .WORD_W(WORD_W),
         .INIT_FILE(ROM12_FILE)
     ) u_rom12 (
         .clk(clk), .en(ce), .table_sel(tsel_rom), .index(index11), .value(word12)
     );
-    // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5)
-    spec_delay #(.W(WORD_W), .N(1)) u_word (.clk(clk), .ce(ce), .d(word12), .q(word_q));
+    // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5, where
+    // syn/ecp5_pack.py moves this register into the block RAM's own output register). The table value and the
+    // interpolation step get registers of their own, so that the step's feeds only the interpolator's DSP
+    // block (which then takes it as its input register).
+    wire [TBL_DW-1:0] word_v;
+    spec_delay #(.W(TBL_DW), .N(1)) u_word (.clk(clk), .ce(ce), .d(word12[TBL_DW-1:0]), .q(word_v));
     wire [FRAC_W-1:0] frac_interp;   // the position's fraction, delayed to meet the table word
     spec_delay #(.W(FRAC_W), .N(2)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac_interp));
     wire zero_m;
@@ -81,24 +105,25 @@ module spec_datapath #(
     wire [TBL_DW-1:0] value_m;
     generate
         if (INTERP != 0) begin : g_interp
-            spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC)) u_interp (
-                .clk(clk), .ce(ce), .word(word_q), .frac(frac_interp), .value(value_m)
+            wire [DELTA_W-1:0] word_d;
+            spec_delay #(.W(DELTA_W), .N(1)) u_word_d (.clk(clk), .ce(ce), .d(word12[WORD_W-1:TBL_DW]), .q(word_d));
+            spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC), .DSP_FF(P)) u_interp (
+                .clk(clk), .ce(ce), .v(word_v), .delta(word_d), .frac(frac_interp), .value(value_m)
             );
         end else begin : g_plain
             wire unused_frac;
             assign unused_frac = &{1'b0, frac_interp};
-            assign value_m = word_q;
+            assign value_m = word_v;
         end
     endgenerate
 
     // multiplier 13 (three stages) -> output 27
     wire [C_W-1:0] c_m;
     spec_delay #(.W(C_W), .N(VS)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
-    spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W)) u_mul13 (
-        .clk(clk), .rst(rst), .ce(ce), .en(ce & vs[LAT-1]), .c(c_m), .value(value_m), .zero(zero_m),
+    spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W), .DSP_FF(P)) u_mul13 (
+        .clk(clk), .rst(rst), .ce(ce), .en(out_en), .c(c_m), .value(value_m), .zero(zero_m),
         .out(out)
     );
-    spec_delay #(.W(1), .N(LAT)) u_last (.clk(clk), .ce(ce), .d(in_last), .q(out_last));
     assign out_valid = vs[LAT];
     assign busy = |vs;
 endmodule

@@ -71,38 +71,37 @@ module spec_setup_engine #(
     // ---- the runs: vector, plane (0: a = x, b = y, t = z; 1: a = z, b = x, t = y), role, halving -----------
     // vectors: 0 N1, 1 N2, 2 H1, 3 H2, 4 P (perpendicular(N1)), 5 N1 of the H1 frame ("M1")
     // roles: 0 drive (frame), 1 follow, 2 drive with the angle lane
-    reg [2:0] run_vec;
-    reg run_plane, run_halve;
-    reg [1:0] run_role;
+    // the runs, 7 bits each {vector, plane, role, halving}, run 0 in the lowest bits (a ROM in LUTs):
+    //    0: P1 N1     vector 0, plane (x,y), drive
+    //    1: N2        vector 1, plane (x,y), follow
+    //    2: H1        vector 2, plane (x,y), follow
+    //    3: H2        vector 3, plane (x,y), follow
+    //    4: P         vector 4, plane (x,y), follow
+    //    5: P2 N1     vector 0, plane (z,x), drive, halving
+    //    6: N2        vector 1, plane (z,x), follow, halving
+    //    7: H1        vector 2, plane (z,x), follow, halving
+    //    8: H2        vector 3, plane (z,x), follow, halving
+    //    9: P         vector 4, plane (z,x), follow, halving
+    //   10: P3 N2     vector 1, plane (x,y), drive, halving
+    //   11: H1        vector 2, plane (x,y), follow, halving
+    //   12: H2        vector 3, plane (x,y), follow, halving
+    //   13: P4 N2     vector 1, plane (z,x), drive
+    //   14: H2        vector 3, plane (z,x), follow
+    //   15: G1 H1     vector 2, plane (x,y), drive, halving
+    //   16: H2        vector 3, plane (x,y), follow, halving
+    //   17: G2 H1     vector 2, plane (z,x), drive, halving
+    //   18: H2        vector 3, plane (z,x), follow, halving
+    //   19: M1        vector 5, plane (z,x), follow, halving
+    //   20: Q1 H2     vector 3, plane (x,y), drive, halving
+    //   21: M1        vector 5, plane (x,y), follow, halving
+    //   22: gamma     vector 3, plane (z,x), angle
+    //   23: lambda    vector 5, plane (z,x), angle
+    localparam [7*NRUN-1:0] RUNS = 168'hb8f29b1b6ed4b342e8c3346465bb566c4c26488900;
     reg [4:0] run;
-    always @* begin
-        case (run)
-            5'd0:  {run_vec, run_plane, run_role, run_halve} = {3'd0, 1'b0, 2'd0, 1'b0};   // P1 N1
-            5'd1:  {run_vec, run_plane, run_role, run_halve} = {3'd1, 1'b0, 2'd1, 1'b0};   //    N2
-            5'd2:  {run_vec, run_plane, run_role, run_halve} = {3'd2, 1'b0, 2'd1, 1'b0};   //    H1
-            5'd3:  {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b0, 2'd1, 1'b0};   //    H2
-            5'd4:  {run_vec, run_plane, run_role, run_halve} = {3'd4, 1'b0, 2'd1, 1'b0};   //    P
-            5'd5:  {run_vec, run_plane, run_role, run_halve} = {3'd0, 1'b1, 2'd0, 1'b1};   // P2 N1
-            5'd6:  {run_vec, run_plane, run_role, run_halve} = {3'd1, 1'b1, 2'd1, 1'b1};   //    N2
-            5'd7:  {run_vec, run_plane, run_role, run_halve} = {3'd2, 1'b1, 2'd1, 1'b1};   //    H1
-            5'd8:  {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b1, 2'd1, 1'b1};   //    H2
-            5'd9:  {run_vec, run_plane, run_role, run_halve} = {3'd4, 1'b1, 2'd1, 1'b1};   //    P
-            5'd10: {run_vec, run_plane, run_role, run_halve} = {3'd1, 1'b0, 2'd0, 1'b1};   // P3 N2
-            5'd11: {run_vec, run_plane, run_role, run_halve} = {3'd2, 1'b0, 2'd1, 1'b1};   //    H1
-            5'd12: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b0, 2'd1, 1'b1};   //    H2
-            5'd13: {run_vec, run_plane, run_role, run_halve} = {3'd1, 1'b1, 2'd0, 1'b0};   // P4 N2
-            5'd14: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b1, 2'd1, 1'b0};   //    H2
-            5'd15: {run_vec, run_plane, run_role, run_halve} = {3'd2, 1'b0, 2'd0, 1'b1};   // G1 H1
-            5'd16: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b0, 2'd1, 1'b1};   //    H2
-            5'd17: {run_vec, run_plane, run_role, run_halve} = {3'd2, 1'b1, 2'd0, 1'b1};   // G2 H1
-            5'd18: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b1, 2'd1, 1'b1};   //    H2
-            5'd19: {run_vec, run_plane, run_role, run_halve} = {3'd5, 1'b1, 2'd1, 1'b1};   //    M1
-            5'd20: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b0, 2'd0, 1'b1};   // Q1 H2
-            5'd21: {run_vec, run_plane, run_role, run_halve} = {3'd5, 1'b0, 2'd1, 1'b1};   //    M1
-            5'd22: {run_vec, run_plane, run_role, run_halve} = {3'd3, 1'b1, 2'd2, 1'b0};   // gamma
-            default: {run_vec, run_plane, run_role, run_halve} = {3'd5, 1'b1, 2'd2, 1'b0}; // lambda
-        endcase
-    end
+    wire [2:0] run_vec;
+    wire run_plane, run_halve;
+    wire [1:0] run_role;
+    assign {run_vec, run_plane, run_role, run_halve} = RUNS[run*7 +: 7];
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
     reg [W-1:0] vmem[0:31];
@@ -127,54 +126,87 @@ module spec_setup_engine #(
     reg signed [ZW-1:0] gam, lam;
     reg [W-1:0] mag, c1;
 
-    // prescale of the input vector being loaded
+    // the vectors into the vector memory, one component a clock: the input vectors are shifted out of vec_in,
+    // every component shifted left by its vector's common amount (SetupModel::prescale) in one shifter; then
+    // P = perpendicular(N1) from N1's codes (N1 x e_k, e_k the axis of its smallest component) and M1 = (0, 0, U)
     reg [2:0] ld_v;                       // 0..3: N1, N2, H1, H2; 4: P; 5: M1
-    reg [1:0] ld_c;
-    wire [3*W-1:0] pre_v;
-    wire pre_zero;
-    spec_setup_prescale u_pre (.v_i(vec_in[(ld_v[1:0])*3*VEC_W +: 3*VEC_W]), .v_o(pre_v), .zero(pre_zero));
-    reg [3*W-1:0] n1p;                    // prescaled N1, for P
-    wire signed [W-1:0] nx = n1p[0 +: W], ny = n1p[W +: W], nz = n1p[2*W +: W];
-    wire [W-1:0] ax = nx[W-1] ? -nx : nx, ay = ny[W-1] ? -ny : ny, az = nz[W-1] ? -nz : nz;
-    wire [3*W-1:0] ppv = (ax <= ay && ax <= az) ? {-ny, nz, {W{1'b0}}}
-                       : (ay <= az)             ? {nx, {W{1'b0}}, -nz}
-                                                : {{W{1'b0}}, -nx, ny};
+    reg [1:0] ld_c;                       // 0: the vector's shift; 1..3: its x, y, z
+    reg [5:0] ld_sh, n1_sh;               // the shift of the vector being loaded, N1's
+    reg [3*VEC_W-1:0] n1q;                // N1's codes
+    wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
+    wire [VEC_W-1:0] mx = cx[VEC_W-1] ? -cx : cx, my = cy[VEC_W-1] ? -cy : cy, mz = cz[VEC_W-1] ? -cz : cz;
+    wire [VEC_W-1:0] mor = mx | my | mz;   // its leading one is the largest magnitude's
+    localparam [5:0] FM1 = F - 1;
+    reg [5:0] lead;
+    integer k;
+    always @* begin
+        lead = 6'd0;
+        for (k = 0; k < VEC_W; k = k + 1) if (mor[k]) lead = k[5:0];
+    end
+    wire signed [VEC_W-1:0] qx = n1q[0 +: VEC_W], qy = n1q[VEC_W +: VEC_W], qz = n1q[2*VEC_W +: VEC_W];
+    wire [VEC_W-1:0] ax = qx[VEC_W-1] ? -qx : qx, ay = qy[VEC_W-1] ? -qy : qy, az = qz[VEC_W-1] ? -qz : qz;
+    wire [1:0] pk = (ax <= ay && ax <= az) ? 2'd0 : (ay <= az) ? 2'd1 : 2'd2;
+    // P's component c (1 x, 2 y, 3 z): k = x: (0, nz, -ny); k = y: (-nz, 0, nx); k = z: (ny, -nx, 0)
+    reg signed [VEC_W:0] pc;
+    always @* begin
+        case ({pk, ld_c})
+            {2'd0, 2'd2}: pc = {qz[VEC_W-1], qz};
+            {2'd0, 2'd3}: pc = -{qy[VEC_W-1], qy};
+            {2'd1, 2'd1}: pc = -{qz[VEC_W-1], qz};
+            {2'd1, 2'd3}: pc = {qx[VEC_W-1], qx};
+            {2'd2, 2'd1}: pc = {qy[VEC_W-1], qy};
+            {2'd2, 2'd2}: pc = -{qx[VEC_W-1], qx};
+            default: pc = {(VEC_W + 1) {1'b0}};
+        endcase
+    end
+    wire signed [VEC_W:0] ld_val = (ld_v == 3'd4) ? pc : {cx[VEC_W-1], cx};
+    wire signed [W-1:0] ld_ext = {{(W - VEC_W - 1) {ld_val[VEC_W]}}, ld_val};
+    wire signed [W-1:0] ld_word = ld_ext <<< ((ld_v == 3'd4) ? n1_sh : ld_sh);
 
     // ---- the CORDIC lane -------------------------------------------------------------------------------------
-    reg signed [W-1:0] la, lb, lt, acc;   // pair, third coordinate, gain sum
+    reg signed [W-1:0] la, lb, acc;       // the pair, the third coordinate's gain sum
     reg signed [ZW-1:0] lz;
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
     reg [4:0] it;                         // micro-rotation
-    wire d_now = (run_role == 2'd1) ? drec[it] : ~lb[W-1];
+    wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
     wire signed [W-1:0] as = la >>> it;
     wire signed [W-1:0] bs = lb >>> it;
-    localparam [7:0] GN = `SETUP_GAIN_N, HN = `SETUP_HALF_N;
-    wire [7:0] nterm = run_halve ? HN : GN;
-    reg signed [W-1:0] term;
-    reg tneg;
-    integer q;
-    always @* begin
-        term = {W{1'b0}};
-        tneg = 1'b0;
-        for (q = 0; q < `SETUP_GAIN_N; q = q + 1) begin
-            if (!run_halve && it == q[4:0]) begin
-                term = GSH[8*q+7] ? (lt <<< 1) : (lt >>> GSH[8*q +: 8]);
-                tneg = GNEG[q];
-            end
+    // The gain of the third coordinate (SetupModel::gain_mul: sum of sign * floor(t / 2^shift)) without a barrel
+    // shifter: lts runs through t, t >>> 1, t >>> 2, ... (arithmetic shifts compose exactly), one step per
+    // micro-rotation, and the term of shift i is added when it is one of the pass's terms. Shift -1 (t * 2) is
+    // added as the run starts, shift ITERS as its first write-back clock (the generator keeps the shifts in
+    // -1 .. ITERS). gterm / hterm[s + 1] = {is a term, minus} for shift s, the tables of G and G/2.
+    function [1:0] term_of(input [8*32-1:0] sh, input [31:0] minus, input integer n, input integer s);
+        integer q;
+        begin
+            term_of = 2'b00;
+            for (q = 0; q < n; q = q + 1)
+                if ({{24{sh[8*q+7]}}, sh[8*q +: 8]} == s) term_of = {1'b1, minus[q]};
         end
-        for (q = 0; q < `SETUP_HALF_N; q = q + 1) begin
-            if (run_halve && it == q[4:0]) begin
-                term = HSH[8*q+7] ? (lt <<< 1) : (lt >>> HSH[8*q +: 8]);
-                tneg = HNEG[q];
-            end
+    endfunction
+    localparam [8*32-1:0] GSH32 = {{(8 * (32 - `SETUP_GAIN_N)) {1'b0}}, GSH};
+    localparam [8*32-1:0] HSH32 = {{(8 * (32 - `SETUP_HALF_N)) {1'b0}}, HSH};
+    localparam [31:0] GNEG32 = {{(32 - `SETUP_GAIN_N) {1'b0}}, GNEG};
+    localparam [31:0] HNEG32 = {{(32 - `SETUP_HALF_N) {1'b0}}, HNEG};
+    wire [1:0] gterm[0:ITERS+1];
+    wire [1:0] hterm[0:ITERS+1];
+    wire [ZW-1:0] atab[0:31];
+    genvar g;
+    generate
+        for (g = 0; g <= ITERS + 1; g = g + 1) begin : g_terms
+            assign gterm[g] = term_of(GSH32, GNEG32, `SETUP_GAIN_N, g - 1);
+            assign hterm[g] = term_of(HSH32, HNEG32, `SETUP_HALF_N, g - 1);
         end
-    end
-    reg [ZW-1:0] atan_i;
-    always @* begin
-        atan_i = {ZW{1'b0}};
-        for (q = 0; q < ITERS; q = q + 1) if (it == q[4:0]) atan_i = ATAN[q*ZW +: ZW];
-    end
+        for (g = 0; g < 32; g = g + 1) begin : g_atab
+            assign atab[g] = (g < ITERS) ? ATAN[(g % ITERS)*ZW +: ZW] : {ZW{1'b0}};
+        end
+    endgenerate
+    reg signed [W-1:0] lts;               // t >>> it during the micro-rotations
+    wire [1:0] tc_rot = run_halve ? hterm[it + 1] : gterm[it + 1];
+    wire [1:0] tc_first = run_halve ? hterm[0] : gterm[0];
+    wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
+    wire [ZW-1:0] atan_i = atab[it];
 
     // ---- table lookups with interpolation: log2 (TB + RB bits of position) and exp2 -----------------------------
     reg [TB-1:0] tab_a;
@@ -192,30 +224,24 @@ module spec_setup_engine #(
     assign unused_tprod = &{1'b0, tprod_r[RB-1:0]};
 
     // log2 operand: leading one and the bits below it
+    // the operand is normalized by shifting it left one bit a clock until its leading one is at the top (lg_e
+    // counts down from its position F + 1); then the TB + RB bits below it are the table index and position
     reg [F+1:0] lgx;
     reg [5:0] lg_e;
-    integer k;
-    always @* begin
-        lg_e = 6'd0;
-        for (k = 0; k < F + 2; k = k + 1) if (lgx[k]) lg_e = k[5:0];
-    end
-    wire [F+1+TB+RB:0] lg_n = {lgx, {(TB + RB) {1'b0}}} << (F + 1 - lg_e);
-    wire [TB-1:0] lg_j = lg_n[F+TB+RB -: TB];
-    wire [RB-1:0] lg_r = lg_n[F+RB -: RB];
-    wire unused_lgn;
-    assign unused_lgn = &{1'b0, lg_n[F+1+TB+RB], lg_n[F:0]};
+    wire [TB-1:0] lg_j = lgx[F -: TB];
+    wire [RB-1:0] lg_r = lgx[F-TB -: RB];
+    wire unused_lgx;
+    assign unused_lgx = &{1'b0, lgx[F-TB-RB:0]};
 
     // ---- back end registers ------------------------------------------------------------------------------------
     reg flat, nohl, xpos, sat;
     reg [LF+5:0] lx, ls;                  // log2 of A's operand, log2 of the strength
-    reg [LF+5:0] la_v;                    // -log2 A, clamped
-    reg [LF+N_W+5:0] nla;                 // n * la_v (shift and add)
+    reg [LF+N_W+5:0] nla, la_sh;          // n * la_v (shift and add: la_v doubled a clock)
     localparam PW = LF + N_W + 8;
     reg signed [PW-1:0] pv;
     reg signed [ZW-1:0] z0;
     reg [ANG_W-1:0] zeta0, dzeta;
     reg [C_W-1:0] ccode;
-    reg [EF:0] ev;
     // divider
     localparam DW = L_W + S;
     reg [DW-1:0] drem, dden;
@@ -243,13 +269,14 @@ module spec_setup_engine #(
     wire signed [LF+7:0] la_raw = $signed({1'b0, flat ? OFF_FLAT : OFF}) - $signed({2'b00, lx});
     wire signed [LF+7:0] lis = $signed({2'b00, ls}) - $signed(STR_FRAC << LF);
     wire [PW-LF-1:0] p_i = pv[PW-1:LF];
-    wire [5:0] p_sh = EF - C_W + {1'b0, p_i[4:0]};
-    wire [EF+1:0] p_round = ({1'b0, ev} + ({{(EF + 1) {1'b0}}, 1'b1} << (p_sh - 1))) >> p_sh;
+    wire [5:0] p_sh1 = EF - C_W - 1 + {1'b0, p_i[4:0]};
+    wire [W-1:0] p_inc = as + 1'b1;
+    wire [W-2:0] p_round = p_inc[W-1:1];
     wire [5:0] nbit6 = bs_step - 6'd7;   // steps 7..16: bit nbit of n
     wire [3:0] nbit = nbit6[3:0];
     wire zero_c = bad || nohl || (s_reg == {STR_W{1'b0}}) || ((n_reg != {N_W{1'b0}}) && !xpos);
     wire unused_bits;
-    assign unused_bits = &{1'b0, z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], nterm, nbit6[5:4]};
+    assign unused_bits = &{1'b0, z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], nbit6[5:4], p_sh1[5], p_inc[0]};
 
     always @(posedge clk) begin
         v_we <= 1'b0;
@@ -277,28 +304,32 @@ module spec_setup_engine #(
                 end
                 // write the prescaled vectors (and P, and M1 = (0, 0, U)) into the vector memory
                 ST_LOAD: begin
-                    v_we <= 1'b1;
-                    v_wa <= {ld_v, ld_c};
-                    if (ld_v < 3'd4) begin
-                        v_wd <= pre_v[ld_c*W +: W];
-                        if (ld_v == 3'd0) n1p <= pre_v;
-                        if (ld_c == 2'd0 && pre_zero) bad <= 1'b1;
-                    end else if (ld_v == 3'd4) begin
-                        v_wd <= ppv[ld_c*W +: W];
-                    end else begin
-                        v_wd <= (ld_c == 2'd2) ? U : {W{1'b0}};
-                    end
-                    if (ld_c == 2'd2) begin
-                        ld_c <= 2'd0;
-                        ld_v <= ld_v + 3'd1;
-                        if (ld_v == 3'd5) begin
-                            run <= 5'd0;
-                            ph <= 4'd0;
-                            st <= bad ? ST_BE : ST_RD;
-                            bs_step <= 6'd0;
+                    if (ld_c == 2'd0) begin
+                        // the vector's shift (input vectors) from its components' leading one
+                        ld_sh <= FM1 - lead;
+                        if (ld_v == 3'd0) begin
+                            n1_sh <= FM1 - lead;
+                            n1q <= vec_in[0 +: 3*VEC_W];
                         end
+                        if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
+                        ld_c <= 2'd1;
                     end else begin
-                        ld_c <= ld_c + 2'd1;
+                        v_we <= 1'b1;
+                        v_wa <= {ld_v, ld_c - 2'd1};
+                        v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_word;
+                        if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};   // the next component
+                        if (ld_c == 2'd3) begin
+                            ld_c <= 2'd0;
+                            ld_v <= ld_v + 3'd1;
+                            if (ld_v == 3'd5) begin
+                                run <= 5'd0;
+                                ph <= 4'd0;
+                                st <= bad ? ST_BE : ST_RD;
+                                bs_step <= 6'd0;
+                            end
+                        end else begin
+                            ld_c <= ld_c + 2'd1;
+                        end
                     end
                 end
                 // read a, b, t of the run's vector (the memory's read is registered: data one clock later)
@@ -313,8 +344,8 @@ module spec_setup_engine #(
                         end
                         4'd3: lb <= run_halve ? ($signed(v_rd + 1'b1) >>> 1) : $signed(v_rd);
                         default: begin
-                            lt <= v_rd;
-                            acc <= {W{1'b0}};
+                            lts <= v_rd;
+                            acc <= !tc_first[1] ? {W{1'b0}} : tc_first[0] ? -($signed(v_rd) <<< 1) : ($signed(v_rd) <<< 1);
                             it <= 5'd0;
                             lz <= {ZW{1'b0}};
                             // the turn before the micro-rotations: by pi (frame passes; the driver decides,
@@ -335,11 +366,14 @@ module spec_setup_engine #(
                     endcase
                 end
                 ST_ROT: begin
-                    la <= d_now ? la + bs : la - bs;
-                    lb <= d_now ? lb - as : lb + as;
-                    lz <= d_now ? lz + $signed(atan_i) : lz - $signed(atan_i);
-                    if (run_role != 2'd1) drec[it] <= d_now;
-                    if (it < nterm[4:0]) acc <= tneg ? acc - term : acc + term;
+                    // one adder each: the direction folded into the operand (x - y = x + ~y + 1)
+                    la <= la + (bs ^ {W{~d_now}}) + {{(W - 1) {1'b0}}, ~d_now};         // d: la + bs, else la - bs
+                    lb <= lb + (as ^ {W{d_now}}) + {{(W - 1) {1'b0}}, d_now};           // d: lb - as, else lb + as
+                    lz <= lz + (atan_i ^ {ZW{~d_now}}) + {{(ZW - 1) {1'b0}}, ~d_now};   // d: + atan, else - atan
+                    // the directions: the driver records them, followers replay them (a rotating register)
+                    drec <= {d_now, drec[ITERS-1:1]};
+                    if (tc_rot[1]) acc <= acc + (lts ^ {W{tc_rot[0]}}) + {{(W - 1) {1'b0}}, tc_rot[0]};
+                    lts <= lts >>> 1;
                     it <= it + 5'd1;
                     if (it == ITERS - 1) begin
                         st <= ST_WR;
@@ -349,6 +383,7 @@ module spec_setup_engine #(
                 ST_WR: begin
                     ph <= ph + 4'd1;
                     v_we <= 1'b1;
+                    if (ph == 4'd0 && tc_last[1]) acc <= acc + (lts ^ {W{tc_last[0]}}) + {{(W - 1) {1'b0}}, tc_last[0]};
                     case (ph)
                         4'd0: begin
                             v_wa <= {run_vec, ca};
@@ -414,6 +449,7 @@ module spec_setup_engine #(
                         6'd1: begin
                             z0 <= (mid > PI_Z) ? z0 - TWO_PI : (mid < -PI_Z) ? z0 + TWO_PI : z0;
                             lgx <= flat ? c1[F+1:0] : mag[F+1:0];
+                            lg_e <= F + 1;
                             xpos <= flat ? (!c1[W-1] && c1 != {W{1'b0}}) : (!mag[W-1] && mag != {W{1'b0}});
                         end
                         6'd2: begin
@@ -426,6 +462,7 @@ module spec_setup_engine #(
                         6'd3: begin
                             lx <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
                             lgx <= {{(F + 2 - STR_W) {1'b0}}, s_reg};
+                            lg_e <= F + 1;
                         end
                         6'd4: begin
                             st <= ST_LG;      // log2 of the strength, then step 5
@@ -435,9 +472,9 @@ module spec_setup_engine #(
                             ls <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
                         end
                         6'd6: begin
-                            la_v <= (!xpos || la_raw < 0) ? {(LF + 6) {1'b0}}
-                                  : (la_raw > $signed({1'b0, LA_MAX})) ? LA_MAX[LF+5:0] : la_raw[LF+5:0];
                             nla <= {(LF + N_W + 6) {1'b0}};
+                            la_sh <= {{N_W{1'b0}}, (!xpos || la_raw < 0) ? {(LF + 6) {1'b0}}
+                                      : (la_raw > $signed({1'b0, LA_MAX})) ? LA_MAX[LF+5:0] : la_raw[LF+5:0]};
                         end
                         6'd7, 6'd8, 6'd9, 6'd10, 6'd11, 6'd12, 6'd13, 6'd14, 6'd15, 6'd16: begin
                             // n * la_v, one bit of n a clock (below)
@@ -452,7 +489,7 @@ module spec_setup_engine #(
                         end
                         6'd19: begin
                             ccode <= (p_i > C_W + 1) ? {C_W{1'b0}}
-                                   : (p_round > {{(EF + 2 - C_W) {1'b0}}, {C_W{1'b1}}}) ? {C_W{1'b1}} : p_round[C_W-1:0];
+                                   : (p_round > {{(W - 1 - C_W) {1'b0}}, {C_W{1'b1}}}) ? {C_W{1'b1}} : p_round[C_W-1:0];
                         end
                         default: begin       // 20: wait for the divider and the output register (and stay)
                             if (dcnt == ZW[5:0] && !(m_tvalid && !m_tready)) begin
@@ -471,7 +508,8 @@ module spec_setup_engine #(
                         end
                     endcase
                     if (bs_step >= 6'd7 && bs_step <= 6'd16) begin
-                        if (n_reg[nbit]) nla <= nla + ({{N_W{1'b0}}, la_v} << nbit);
+                        if (n_reg[nbit]) nla <= nla + la_sh;
+                        la_sh <= {la_sh[LF+N_W+4:0], 1'b0};
                     end
                     // the divider runs beside the back end from step 1 on
                     if (bs_step != 6'd0 && dcnt != ZW[5:0]) begin
@@ -481,17 +519,24 @@ module spec_setup_engine #(
                         if (dcnt == ZW[5:0] - 6'd1) dzeta <= {dnq[ANG_W-2:0], dge};
                     end
                 end
-                // a log2 lookup of lgx: read words j and j + 1, interpolate (back to ST_BE)
+                // a log2 lookup of lgx: normalize, read words j and j + 1, interpolate (back to ST_BE)
                 ST_LG: begin
                     ph <= ph + 4'd1;
                     case (ph)
-                        4'd0: tab_a <= lg_j;
-                        4'd1: tab_a <= lg_j + 1'b1;
-                        4'd2: begin
+                        4'd0: begin
+                            if (!lgx[F+1] && lg_e != 6'd0) begin
+                                lgx <= {lgx[F:0], 1'b0};
+                                lg_e <= lg_e - 6'd1;
+                                ph <= ph;
+                            end
+                        end
+                        4'd1: tab_a <= lg_j;
+                        4'd2: tab_a <= lg_j + 1'b1;
+                        4'd3: begin
                             w0 <= {{(EF + 1 - LF) {1'b0}}, lg_w};
                             tr <= lg_r;
                         end
-                        4'd3: tdiff <= ((&lg_j) ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w}) - w0;
+                        4'd4: tdiff <= ((&lg_j) ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w}) - w0;
                         default: st <= ST_BE;   // tprod is ready
                     endcase
                 end
@@ -506,7 +551,12 @@ module spec_setup_engine #(
                             tr <= pv[LF-TB-1 -: RB];
                         end
                         4'd3: tdiff <= w0 - ((&pv[LF-1 -: TB]) ? (1 << (EF - 1)) : ex_w);
-                        4'd4: ev <= w0 - tprod_r[EF+RB:RB];
+                        4'd4: begin
+                            // 2^-f in la, and the rounding shift (EF - C_W + i, at most EF + 1 when the code is
+                            // not 0) less one in it: code = ((la >>> it) + 1) >> 1, with the lane's shifter
+                            la <= {{(W - EF - 1) {1'b0}}, w0 - tprod_r[EF+RB:RB]};
+                            it <= p_sh1[4:0];
+                        end
                         default: st <= ST_BE;
                     endcase
                 end

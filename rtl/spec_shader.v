@@ -20,7 +20,7 @@
 module spec_shader #(
     parameter ITERATIVE = 0,
     parameter FIFO_AW = 9,                      // spec_setup's descriptor FIFO (pipelined setup)
-    parameter FLAGS_AW = 5,                     // flags of up to 2^FLAGS_AW spans between setup and pixels
+    parameter FLAGS_AW = (ITERATIVE != 0) ? 2 : 5,   // flags of up to 2^FLAGS_AW - 1 spans between setup and pixels
     parameter LOG2_FILE = `SETUP_LOG2_FILE,
     parameter EXP2_FILE = `SETUP_EXP2_FILE,
     // spec_stream's configuration (docs/stream.md)
@@ -85,23 +85,24 @@ module spec_shader #(
             fcnt <= fcnt_n;
             fspace <= fcnt_n < (1 << FLAGS_AW) - 1;
         end
-        // m_axis_tuser: the flags of the oldest span in spec_stream (the one whose pixels leave). It is loaded
-        // when a span arrives at an empty FIFO and when the oldest span's last pixel leaves; spec_stream's first
-        // pixel of a span comes many clocks after its descriptor, so the register is ready before it.
-        if (pop ? (fcnt_n != {(FLAGS_AW + 1) {1'b0}}) : (push && fcnt == {(FLAGS_AW + 1) {1'b0}})) begin
+        // m_axis_tuser: the oldest span's flags, loaded when a span arrives at an empty FIFO and when the oldest
+        // span's last pixel leaves (its first pixel comes many clocks after its descriptor); reset to 0.
+        if (rst) m_axis_tuser <= 7'd0;
+        else if (pop ? (fcnt_n != {(FLAGS_AW + 1) {1'b0}}) : (push && fcnt == {(FLAGS_AW + 1) {1'b0}})) begin
             if (pop && fcnt == {{FLAGS_AW{1'b0}}, 1'b1}) m_axis_tuser <= d_flags;   // it was the only span
             else m_axis_tuser <= pop ? fmem[fr_next] : d_flags;
         end
     end
 
     // ---- the core --------------------------------------------------------------------------------------------------
+    wire unused_keep;   // one lane (LANES = 1): tkeep is always 1
     spec_stream #(
         .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
         .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_stream (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(to_stream), .s_axis_tready(s_ready), .s_axis_tdata(d_data),
         .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata),
-        .m_axis_tlast(m_axis_tlast)
+        .m_axis_tlast(m_axis_tlast), .m_axis_tkeep(unused_keep)
     );
 endmodule
 `default_nettype wire

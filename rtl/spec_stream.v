@@ -1,6 +1,7 @@
-// spec_stream - the UA 71489 datapath as a streaming core: one pixel per clock, span descriptors in through
-// an AXI4-Stream sink, pixels out through an AXI4-Stream source. Same datapath modules as spec_unit
-// (ROM 9, decoder 10, adder 6 / register 8, multiplier 11, ROM 12, multiplier 13), same pixels bit for bit.
+// spec_stream - the UA 71489 datapath as a streaming core: LANES pixels per clock (1, 2 or 4), span
+// descriptors in through an AXI4-Stream sink, pixels out through an AXI4-Stream source. Same datapath modules
+// as spec_unit (ROM 9, decoder 10, adder 6 / register 8, multiplier 11, ROM 12, multiplier 13), the same
+// pixels bit for bit and in the same order for every LANES.
 //
 // Descriptor (s_axis_tdata, DESC_W bits; the layout is the generator's, rom/spec_params.vh; bits outside the
 // fields are ignored). Default widths: C [15:0], n [25:16], l [47:32], zeta0 [95:64], dzeta [127:96], 128 bits.
@@ -10,16 +11,26 @@
 //   [DESC_ZETA0_LSB +: ANG_W]    zeta0   start angle, two's complement, ANG_FRAC fraction bits (register 3)
 //   [DESC_DZETA_LSB +: ANG_W]    dzeta   angle step, same format     (register 2)
 // Fields outside DESC_W or overlapping stop elaboration (spec_parameter_error_... modules, as spec_param_check).
-// Pixels (m_axis_tdata, OUT_W bits): intensity UQ0.OUT_W; m_axis_tlast = 1 on a span's last pixel.
+// Pixels: a beat carries LANES slots of OUT_W bits, slot j in m_axis_tdata[j*OUT_W +: OUT_W] (intensity
+// UQ0.OUT_W); m_axis_tkeep[j] = 1 when slot j holds a pixel (the kept slots are always slots 0 .. k-1).
+//   PACK = 0 (default): a beat holds pixels of one span, in order from slot 0; m_axis_tlast = 1 on a span's
+//            last beat, whose slots after the span's last pixel are empty (tkeep 0). LANES = 1: one pixel
+//            per beat, tkeep always 1, tlast on a span's last pixel.
+//   PACK = 1 (LANES > 1): the slots are one sequence of pixels, span after span; a beat that ends a span goes
+//            on with the next span's first pixels when its descriptor is there in time (at most one span
+//            starts per beat). m_axis_tlast = 1 on a beat that holds a span's last pixel; where in the beat
+//            it is follows from the spans' lengths (l + 1 pixels each), which the sink knows (it needs them
+//            to place the pixels). Empty slots only at the end of a beat.
 //
-// Throughput: one pixel per clock while m_axis_tready = 1 and descriptors arrive in time, also across
-// span boundaries: the next descriptors wait in a two-entry buffer while the current span runs.
-// Latency: a descriptor accepted in cycle a (core idle) gives its first pixel in cycle
-// a + 3 + ACC + LAT = a + `SPEC_STREAM_LATENCY (20; 22 with INTERP = 1): buffer, span generator, accumulator (ACC = 5),
-// datapath (LAT = 12 or 14), output register. Backpressure: every pipeline stage advances only when the output
-// register's skid buffer is empty (a register: no combinational path from m_axis_tready); m_axis_tvalid,
-// m_axis_tdata and m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too:
-// 1 while the descriptor buffer's second entry is free.
+// Throughput: one beat per clock while m_axis_tready = 1 and descriptors arrive in time, also across span
+// boundaries: the next descriptors wait in a three-entry buffer while the current span runs.
+// Latency: a descriptor accepted in cycle a (core idle) gives its first beat in cycle
+// a + 4 + ACC + LAT = a + `SPEC_STREAM_LATENCY: buffer and span generator (spec_spangen, 3), accumulator
+// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 17 with INTERP = 1), output
+// register. Backpressure: every pipeline stage advances only when the output register's skid buffer is
+// empty (a register: no combinational path from m_axis_tready); m_axis_tvalid, m_axis_tdata, m_axis_tkeep and
+// m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too: 1 while the descriptor
+// buffer's last entry is free.
 // Reset: rst_n is synchronous, active low. At an edge where it is 0 the buffer, the span generator, the
 // pipeline's valid flags and the output registers are cleared: m_axis_tvalid = 0 (and tdata, tlast = 0) from
 // the next cycle and no pixel of a span in progress appears later; s_axis_tready is 0 in the cycle after a
@@ -51,17 +62,20 @@ module spec_stream #(
     parameter DESC_N_LSB = `SPEC_DESC_N_LSB,
     parameter DESC_L_LSB = `SPEC_DESC_L_LSB,
     parameter DESC_ZETA0_LSB = `SPEC_DESC_ZETA0_LSB,
-    parameter DESC_DZETA_LSB = `SPEC_DESC_DZETA_LSB
+    parameter DESC_DZETA_LSB = `SPEC_DESC_DZETA_LSB,
+    parameter LANES = 1,                        // pixels per beat: 1, 2 or 4
+    parameter PACK = 0                          // 1: a beat may end one span and start the next (LANES > 1)
 ) (
     input  wire              clk,
     input  wire              rst_n,
     input  wire              s_axis_tvalid,
     output wire              s_axis_tready,
     input  wire [DESC_W-1:0] s_axis_tdata,
-    output reg               m_axis_tvalid,
-    input  wire              m_axis_tready,
-    output reg  [OUT_W-1:0]  m_axis_tdata,
-    output reg               m_axis_tlast
+    output reg                     m_axis_tvalid,
+    input  wire                    m_axis_tready,
+    output reg  [LANES*OUT_W-1:0]  m_axis_tdata,
+    output reg  [LANES-1:0]        m_axis_tkeep,
+    output reg                     m_axis_tlast
 );
     wire rst = ~rst_n;
 
@@ -88,178 +102,129 @@ module spec_stream #(
         begin : g_desc_overlap
             spec_parameter_error_descriptor_fields_overlap check_the_DESC_LSB_parameters ();
         end
+        if (LANES != 1 && LANES != 2 && LANES != 4) begin : g_lanes
+            spec_parameter_error_LANES_must_be_1_2_or_4 check_the_LANES_parameter ();
+        end
+        if (PACK != 0 && PACK != 1) begin : g_pack
+            spec_parameter_error_PACK_must_be_0_or_1 check_the_PACK_parameter ();
+        end
     endgenerate
-
-    // descriptor fields
-    wire [C_W-1:0] d_c = s_axis_tdata[DESC_C_LSB +: C_W];
-    wire [N_W-1:0] d_n = s_axis_tdata[DESC_N_LSB +: N_W];
-    wire [L_W-1:0] d_l = s_axis_tdata[DESC_L_LSB +: L_W];
-    wire [ANG_W-1:0] d_zeta0 = s_axis_tdata[DESC_ZETA0_LSB +: ANG_W];
-    wire [ANG_W-1:0] d_dzeta = s_axis_tdata[DESC_DZETA_LSB +: ANG_W];
-    wire unused_desc;   // the reserved bits between the fields
-    assign unused_desc = &{1'b0, s_axis_tdata};
 
     wire ce;             // the pipeline advances
-    wire out_valid;
+    wire ce_next;        // ce in the next cycle
 
-    // ---- descriptor buffer ("registers 1-4 and counter 5" of the next span) -------------------------------
-    // Two entries (head, tail) so that s_axis_tready is a register: tready = "the tail is free".
-    localparam DW = C_W + N_W + L_W + 1 + 2 * ANG_W;
-    wire [DW-1:0] d_in = {d_c, d_n, d_l, (d_l == {L_W{1'b0}}), d_zeta0, d_dzeta};
-    reg head_v, tail_v, ready_q;
-    reg [DW-1:0] head, tail;
-    wire take;           // the span generator takes the head in this cycle
-    assign s_axis_tready = ready_q;
-    wire accept = s_axis_tvalid & ready_q;
-    // The data registers load without conditions on the input: the head whenever it is free or being
-    // taken, the tail whenever it is free; the valid flags say what they hold. This keeps the enables of
-    // the wide registers one gate away from flip-flops.
-    wire head_load = ~head_v | take;
-    always @(posedge clk) begin
-        if (head_load) head <= tail_v ? tail : d_in;
-        if (~tail_v) tail <= d_in;
-    end
-    wire tail_v_d = tail_v ? ~take : (accept & head_v & ~take);
-    always @(posedge clk) begin
-        if (rst) begin
-            head_v <= 1'b0;
-            tail_v <= 1'b0;
-            ready_q <= 1'b0;
-        end else begin
-            if (head_load) head_v <= tail_v | accept;
-            tail_v <= tail_v_d;
-            ready_q <= ~tail_v_d;
-        end
-    end
-    wire [C_W-1:0] head_c;
-    wire [N_W-1:0] head_n;
-    wire [L_W-1:0] head_l;
-    wire head_single;    // l = 0: the span is one pixel
-    wire [ANG_W-1:0] head_zeta0, head_dzeta;
-    assign {head_c, head_n, head_l, head_single, head_zeta0, head_dzeta} = head;
-
-    // ROM 9, read as the span starts: its word is the current span's scale (and, with DECODER_ROM = 1, its
-    // table) from the span's first pixel on
-    wire [SCALE_W-1:0] cur_scale;
-    wire [TSEL_W-1:0] rom_tsel;
-    spec_rom9 #(
-        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
-        .INIT_FILE(ROM9_FILE)
-    ) u_rom9 (
-        .clk(clk), .en(take), .n(head_n), .scale(cur_scale), .table_sel(rom_tsel)
-    );
-    // decoder 10 on the head's n (DECODER_ROM = 0)
-    wire [1:0] head_tsel;
-    wire d30_unused, d31_unused, d32_unused, d33_unused;
-    spec_decoder #(.N_W(N_W)) u_dec10 (
-        .n(head_n), .d30(d30_unused), .d31(d31_unused), .d32(d32_unused), .d33(d33_unused),
-        .table_sel(head_tsel)
+    // ---- descriptor buffer and span generator: beats of LANES slots ---------------------------------------
+    localparam OW = ANG_W + 2;
+    wire [LANES-1:0] b_valid, b_first, b_last;
+    wire [LANES*C_W-1:0] b_c;
+    wire [LANES*SCALE_W-1:0] b_scale;
+    wire [LANES*TSEL_W-1:0] b_tsel;
+    wire [LANES*ANG_W-1:0] b_zeta0;
+    wire [LANES*OW-1:0] b_offs, b_step;
+    spec_spangen #(
+        .LANES(LANES), .PACK(PACK), .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .SCALE_W(SCALE_W),
+        .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .ROM9_FILE(ROM9_FILE),
+        .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB), .DESC_N_LSB(DESC_N_LSB), .DESC_L_LSB(DESC_L_LSB),
+        .DESC_ZETA0_LSB(DESC_ZETA0_LSB), .DESC_DZETA_LSB(DESC_DZETA_LSB), .OW(OW)
+    ) u_gen (
+        .clk(clk), .rst(rst), .ce(ce), .ce_next(ce_next), .s_axis_tvalid(s_axis_tvalid),
+        .s_axis_tready(s_axis_tready),
+        .s_axis_tdata(s_axis_tdata), .b_valid(b_valid), .b_first(b_first), .b_last(b_last), .b_c(b_c),
+        .b_scale(b_scale), .b_tsel(b_tsel), .b_zeta0(b_zeta0), .b_offs(b_offs), .b_step(b_step)
     );
 
-    // ---- span generator: the counter, the span's C, scale and table; register 8 below ----------------------
-    reg cur_v;
-    reg [L_W-1:0] cur_cnt;        // intervals left after the current pixel
-    reg cur_last;                 // the current pixel is its span's last (cur_cnt == 0), kept as a flag
-    reg cur_first;                // the current pixel is its span's first
-    reg [ANG_W-1:0] cur_zeta0, cur_dzeta;
-    reg [C_W-1:0] cur_c;
-    reg [1:0] cur_gate_tsel;      // decoder 10's gates (DECODER_ROM = 0)
-    wire cur_done = ~cur_v | cur_last;     // the current pixel is the span's last (or there is none)
-    assign take = ce & cur_done & head_v;
-    wire step = ce & cur_v & ~cur_last;
-
+    // ---- the slots' flags (valid, last), from the beat to the output: NC stages of ce ------------------------
+    localparam SEG = 12;
+    localparam ACC = (ANG_W + L_W + SEG - 1) / SEG + 4;            // spec_saccum's stages
+    localparam LAT = 14 + ((INTERP != 0) ? 3 : 0);                  // spec_datapath's stages (PIPE = 1)
+    localparam NC = ACC + LAT;
+    reg [NC*LANES-1:0] ctl_v, ctl_l;    // stage k (1 .. NC) of slot j at [(k-1)*LANES + j]
     always @(posedge clk) begin
-        if (rst) cur_v <= 1'b0;
-        else if (ce & cur_done) cur_v <= head_v;
-        if (take) begin
-            cur_cnt <= head_l;
-            cur_last <= head_single;
-            cur_first <= 1'b1;
-            cur_zeta0 <= head_zeta0;
-            cur_dzeta <= head_dzeta;
-            cur_c <= head_c;
-            cur_gate_tsel <= head_tsel;
-        end else if (step) begin
-            cur_cnt <= cur_cnt - {{(L_W - 1) {1'b0}}, 1'b1};
-            cur_last <= (cur_cnt == {{(L_W - 1) {1'b0}}, 1'b1});
-            cur_first <= 1'b0;
-        end
+        if (rst) ctl_v <= {NC*LANES{1'b0}};
+        else if (ce) ctl_v <= {ctl_v[(NC-1)*LANES-1:0], b_valid};
+        if (ce) ctl_l <= {ctl_l[(NC-1)*LANES-1:0], b_last};
     end
+    wire [LANES-1:0] out_v = ctl_v[(NC-1)*LANES +: LANES];
+    wire [LANES-1:0] out_l = ctl_l[(NC-1)*LANES +: LANES];
+    wire out_valid = out_v[0];           // slot 0 is kept whenever any slot is
+    wire out_last = |(out_l & out_v);
 
-    wire [TSEL_W-1:0] cur_tsel;
+    // ---- per slot: register 8 (the pipelined accumulator), then multiplier 11, ROM 12, [interpolator],
+    // multiplier 13 -------------------------------------------------------------------------------------------
+    wire [LANES*OUT_W-1:0] dp_out;
+    genvar j;
     generate
-        if (DECODER_ROM != 0) begin : g_dec_rom
-            assign cur_tsel = rom_tsel;
-            wire unused_gates;
-            assign unused_gates = &{1'b0, cur_gate_tsel};
-        end else begin : g_dec_gates
-            assign cur_tsel = cur_gate_tsel;
-            wire unused_rom;
-            assign unused_rom = &{1'b0, rom_tsel};
+        for (j = 0; j < LANES; j = j + 1) begin : g_lane
+            wire [ANG_W-1:0] angle8;
+            spec_saccum #(.ANG_W(ANG_W), .L_W(L_W), .SEG(SEG), .OW(OW), .OFFS((LANES > 1) ? 1 : 0)) u_acc68 (
+                .clk(clk), .ce(ce), .first(b_first[j]), .zeta0(b_zeta0[j*ANG_W +: ANG_W]),
+                .offs(b_offs[j*OW +: OW]), .step(b_step[j*OW +: OW]), .angle(angle8)
+            );
+            // the slot's C, scale and table, delayed to meet its angle
+            wire [C_W-1:0] c8;
+            wire [SCALE_W-1:0] scale8;
+            wire [TSEL_W-1:0] tsel8;
+            spec_delay #(.W(C_W + SCALE_W + TSEL_W), .N(ACC)) u_side8 (
+                .clk(clk), .ce(ce),
+                .d({b_c[j*C_W +: C_W], b_scale[j*SCALE_W +: SCALE_W], b_tsel[j*TSEL_W +: TSEL_W]}),
+                .q({c8, scale8, tsel8})
+            );
+            wire dp_valid_unused, dp_last_unused, dp_busy_unused;
+            spec_datapath #(
+                .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
+                .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
+                .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .PIPE(1), .CTRL(0),
+                .ROM12_FILE(ROM12_FILE)
+            ) u_dp (
+                .clk(clk), .rst(rst), .ce(ce), .in_valid(1'b0), .in_last(1'b0), .angle(angle8),
+                .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out[j*OUT_W +: OUT_W]),
+                .out_valid(dp_valid_unused), .out_last(dp_last_unused), .busy(dp_busy_unused)
+            );
         end
     endgenerate
-
-    // register 8: the pipelined accumulator (ACC clocks of ce from the current pixel to its angle)
-    localparam ACC = (ANG_W + L_W + 15) / 16 + 2;
-    wire [ANG_W-1:0] angle8;
-    spec_saccum #(.ANG_W(ANG_W), .L_W(L_W), .SEG(16)) u_acc68 (
-        .clk(clk), .ce(ce), .first(cur_first), .zeta0(cur_zeta0), .dzeta(cur_dzeta), .angle(angle8)
-    );
-    // the current pixel's flags, C, scale and table, delayed to meet its angle
-    reg [ACC:1] v8;
-    always @(posedge clk) begin
-        if (rst) v8 <= {ACC{1'b0}};
-        else if (ce) v8 <= {v8[ACC-1:1], cur_v};
-    end
-    wire last8;
-    wire [C_W-1:0] c8;
-    wire [SCALE_W-1:0] scale8;
-    wire [TSEL_W-1:0] tsel8;
-    spec_delay #(.W(1 + C_W + SCALE_W + TSEL_W), .N(ACC)) u_side8 (
-        .clk(clk), .ce(ce), .d({cur_last, cur_c, cur_scale, cur_tsel}), .q({last8, c8, scale8, tsel8})
-    );
-
-    // ---- datapath: multiplier 11, ROM 12, [interpolator], multiplier 13 -------------------------------------
-    wire dp_busy_unused;
-    wire [OUT_W-1:0] dp_out;
-    wire dp_last;
-    spec_datapath #(
-        .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
-        .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .ROM12_FILE(ROM12_FILE)
-    ) u_dp (
-        .clk(clk), .rst(rst), .ce(ce), .in_valid(v8[ACC]), .in_last(last8), .angle(angle8),
-        .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out), .out_valid(out_valid),
-        .out_last(dp_last), .busy(dp_busy_unused)
-    );
 
     // ---- output register with a skid buffer ---------------------------------------------------------------
     // The pipeline's enable is a register (the skid buffer is empty), not m_axis_tready itself: no
-    // combinational path from m_axis_tready into the core's hundreds of enables. When the sink stalls, the
-    // one pixel already on its way is caught in the skid buffer and the pipeline stops a clock later.
+    // combinational path from m_axis_tready into the core's enables. When the sink stalls, the one beat
+    // already on its way is caught in the skid buffer and the pipeline stops a clock later.
     reg skid_v, skid_last;
-    reg [OUT_W-1:0] skid_data;
-    assign ce = ~skid_v;
-    // each next-state function below has at most four inputs: one LUT level from the flip-flops
-    wire o_load = skid_v ? m_axis_tready : (out_valid & (~m_axis_tvalid | m_axis_tready));
+    reg ce_q;            // = ~skid_v: the pipeline's enable straight from a flip-flop
+    reg [LANES-1:0] skid_keep;
+    reg [LANES*OUT_W-1:0] skid_data;
+    assign ce = ce_q;
+    // each next-state function below has at most four inputs: one LUT level from the flip-flops. have_q =
+    // skid_v | out_valid (a beat to offer: in the skid buffer or at the pipeline's end), kept as a register.
+    reg have_q;
+    wire o_load = have_q & (~m_axis_tvalid | m_axis_tready);
+    wire skid_v_d = skid_v ? ~m_axis_tready : (out_valid & m_axis_tvalid & ~m_axis_tready);
+    assign ce_next = ~skid_v_d;
+    // out_valid in the next cycle: the stage before it moves up when ce
+    wire out_valid_d = ce ? ctl_v[(NC-2)*LANES] : out_valid;
     always @(posedge clk) begin
         if (rst) begin
             m_axis_tvalid <= 1'b0;
             skid_v <= 1'b0;
+            ce_q <= 1'b1;
+            have_q <= 1'b0;
         end else begin
-            m_axis_tvalid <= skid_v | out_valid | (m_axis_tvalid & ~m_axis_tready);
-            skid_v <= skid_v ? ~m_axis_tready : (out_valid & m_axis_tvalid & ~m_axis_tready);
+            ce_q <= ~skid_v_d;
+            have_q <= skid_v_d | out_valid_d;
+            m_axis_tvalid <= have_q | (m_axis_tvalid & ~m_axis_tready);
+            skid_v <= skid_v_d;
         end
         if (~skid_v) begin                  // an empty skid buffer copies the pipeline's output
             skid_data <= dp_out;
-            skid_last <= dp_last;
+            skid_keep <= out_v;
+            skid_last <= out_last;
         end
         if (rst) begin                      // defined from the first reset on (4-state simulators)
-            m_axis_tdata <= {OUT_W{1'b0}};
+            m_axis_tdata <= {LANES*OUT_W{1'b0}};
+            m_axis_tkeep <= {LANES{1'b0}};
             m_axis_tlast <= 1'b0;
         end else if (o_load) begin
             m_axis_tdata <= skid_v ? skid_data : dp_out;
-            m_axis_tlast <= skid_v ? skid_last : dp_last;
+            m_axis_tkeep <= skid_v ? skid_keep : out_v;
+            m_axis_tlast <= skid_v ? skid_last : out_last;
         end
     end
 endmodule

@@ -11,10 +11,14 @@ Two kinds of marks in a markdown file (HTML comments: invisible where the markdo
   ...
   <!-- /gen:NAME -->
 
-Facts come from the running code: the generated headers (cfg.*, cfg_up5k.*), the bit-exact model's accuracy run
-(accuracy.*), the render of the default scene through the Verilated core (render.*), and from the measurements
-the optional targets write into docs/data/*.json (data.<file>.*: `make synth`, `make bench`, `make coverage`,
-`make formal` update those files; the check compares the documents with them, it does not rerun synthesis).
+Facts come from the running code: the generated headers (cfg.*, cfg_up5k.*, cfg_tuned.*, cfg_up5k_tuned.*), the
+bit-exact model's accuracy runs (accuracy.*, acc.<variant>.*), `specsim compare` (compare.*), Fig. 8 (q.N, a.N,
+fig8k.*), renders through the Verilated core or the model (render.*, render_<variant>.*: RENDERS), Yosys's
+synth_ice40 of the ROMs (ice40.*; Yosys is a required dependency), `specsim tables` (tables.*, docs/tables.md), a
+GoogleTest's recorded properties (gtest.*), the bound-ratio rows of docs/verification.md that their tests compare
+(vrow.*), small derived values (calc.*: CALC), and the measurements the optional targets write into
+docs/data/*.json (data.<file>.*: `make synth`, `make bench`, `make bench-render`, `make coverage`, `make formal`
+update those files; the check compares the documents with them, it does not rerun synthesis or benchmarks).
 
 --update rewrites the marks in place (make docs); --check (the ctest docs_current) fails, listing every stale
 mark, when a document differs from what the commands give now, or when a document holds a tool's error text
@@ -23,11 +27,14 @@ mark, when a document differs from what the commands give now, or when a documen
 import argparse
 import glob
 import json
+import math
 import os
 import re
 import subprocess
 import sys
 import tempfile
+
+import docgen_shader
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -37,8 +44,7 @@ ERROR_TEXT = re.compile(r"No such file or directory|command not found|Traceback 
                         r"^bash: |Segmentation fault|core dumped|^%Error|CMake Error|^make: \*\*\*", re.M)
 
 
-class DocError(Exception):
-    pass
+DocError = docgen_shader.DocError   # one exception type for both modules
 
 
 class Facts:
@@ -51,7 +57,10 @@ class Facts:
         self.specrom = os.path.join(build, "specrom")
 
     def run(self, cmd):
-        p = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        try:
+            p = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        except OSError as e:
+            raise DocError("%s: %s (make build first)" % (cmd[0], e.strerror))
         if p.returncode != 0:
             raise DocError("%s failed (exit %d): %s" % (" ".join(cmd), p.returncode, p.stderr.strip()[-300:]))
         return p.stdout
@@ -62,30 +71,76 @@ class Facts:
         return self.cache[name]
 
     # ---- providers --------------------------------------------------------------------------------------------
-    def header(self, config):
+    def rom_dir(self, config):
+        """The directory of a configuration's ROM images and headers: rom/ for the default, otherwise what
+        specrom writes (config: tuned, up5k, up5k_tuned)."""
         def make():
             if config == "default":
-                path = os.path.join(ROOT, "rom", "spec_params.h")
-            else:
-                d = tempfile.mkdtemp(prefix="docgen_")
-                self.run([self.specrom] + (["--mode", "tuned"] if config == "tuned" else ["--config", config]) +
-                         ["--out", d])
-                path = os.path.join(d, "spec_params.h")
+                return os.path.join(ROOT, "rom")
+            args = {"tuned": ["--mode", "tuned"], "up5k": ["--config", "up5k"],
+                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"]}.get(config)
+            if args is None:
+                raise DocError("unknown configuration %s" % config)
+            d = tempfile.mkdtemp(prefix="docgen_")
+            self.run([self.specrom] + args + ["--out", d])
+            return d
+        return self.once("rom_dir." + config, make)
+
+    def header(self, config):
+        def make():
             vals = {}
-            for m in re.finditer(r"constexpr int (\w+) = (-?\d+);", open(path).read()):
+            for m in re.finditer(r"constexpr int (\w+) = (-?\d+);",
+                                 open(os.path.join(self.rom_dir(config), "spec_params.h")).read()):
                 vals[m.group(1)] = int(m.group(2))
             return vals
         return self.once("header." + config, make)
 
-    def render(self, mode="patent"):
-        """The default scene at 512 x 512 through the Verilated core (patent or tuned mode): the statistics JSON."""
+    def ice40_brams(self, rom, config):
+        """SB_RAM40_4K cells of Yosys's synth_ice40 of spec_rom9 / spec_rom12 with a configuration's image and
+        parameters (Yosys is a required dependency of make test)."""
         def make():
+            h = self.header(config)
+            top = "spec_rom%s" % rom
+            names = {"9": ("rom9_scale.hex", ["N_W", "SCALE_W", "SCALE_FRAC", "DECODER_ROM", "TSEL_W"]),
+                     "12": ("rom12_cosk.hex", ["TBL_AW", "TSEL_W", "TBL_FRAC", "INTERP", "DELTA_W"])}
+            if rom not in names:
+                raise DocError("no ROM %s" % rom)
+            image, params = names[rom]
+            sets = " ".join("-set %s %d" % (p, h[p]) for p in params)
+            d = tempfile.mkdtemp(prefix="docgen_")
+            stat = os.path.join(d, "stat.txt")
+            self.run(["yosys", "-q", "-p", 'read_verilog -defer rtl/spec_rom.v rtl/%s.v; chparam -set INIT_FILE "%s" %s %s; '
+                      'synth_ice40 -top %s; tee -q -o %s stat' % (top, os.path.join(self.rom_dir(config), image), sets,
+                                                                 top, top, stat)])
+            m = re.search(r"SB_RAM40_4K\s+(\d+)", open(stat).read())
+            return int(m.group(1)) if m else 0
+        return self.once("ice40.%s.%s" % (rom, config), make)
+
+    def yosys_version(self):
+        return self.once("yosys_version", lambda: re.search(r"Yosys ([\d.]+)", self.run(["yosys", "-V"])).group(1))
+
+    def render(self, variant="render"):
+        """A scene rendered with statistics (RENDERS[variant]: by default the default scene at 512 x 512 through
+        the Verilated core): the statistics JSON, and from what the command prints the core's clock cycles
+        ("cycles", rtl only) and --cull-specular's counts ("cull")."""
+        def make():
+            if variant not in RENDERS:
+                raise DocError("unknown render %s" % variant)
             d = tempfile.mkdtemp(prefix="docgen_")
             stats = os.path.join(d, "stats.json")
-            self.run([self.specsim, "render", "--scene", "default", "--size", "512", "--model", "rtl", "--quiet",
-                      "--mode", mode, "--out", os.path.join(d, "r.png"), "--stats", stats])
-            return json.load(open(stats))
-        return self.once("render." + mode, make)
+            out = self.run([self.specsim, "render", "--quiet", "--out", os.path.join(d, "r.png"), "--stats", stats] +
+                           RENDERS[variant])
+            res = json.load(open(stats))
+            m = re.search(r", (\d+) clock cycles", out)
+            if m:
+                res["cycles"] = int(m.group(1))
+            m = re.search(r"cull-specular: (\d+) of (\d+) triangles, (\d+) of (\d+) spans, (\d+) of (\d+) core pixels", out)
+            if m:
+                v = [int(x) for x in m.groups()]
+                res["cull"] = {"triangles": v[0], "of_triangles": v[1], "spans": v[2], "of_spans": v[3],
+                               "pixels": v[4], "of_pixels": v[5]}
+            return res
+        return self.once("render." + variant, make)
 
     def compare(self):
         """`specsim compare`: its two tables (rel: worst relative error in the epicentre, abs: worst absolute / C),
@@ -105,29 +160,50 @@ class Facts:
             return {"rel": tables[0], "abs": tables[1], "text": out}
         return self.once("compare", make)
 
+    def tables_text(self):
+        """What `specsim tables` writes as tables.md now (docs/tables.md is that text, block `tables`)."""
+        def make():
+            d = tempfile.mkdtemp(prefix="docgen_")
+            self.run([self.specsim, "tables", "--out-dir", d])
+            return open(os.path.join(d, "tables.md"), encoding="utf-8").read()
+        return self.once("tables_text", make)
+
     def tables_md(self):
-        """Rows of docs/tables.md (`make tables` writes it, a ctest compares it with `specsim tables --quick`)."""
+        """Rows of the table set table (`specsim tables`, docs/tables.md)."""
         def make():
             rows = []
-            for line in open(os.path.join(ROOT, "docs", "tables.md"), encoding="utf-8"):
+            for line in self.tables_text().splitlines():
                 cells = [c.strip() for c in line.strip().strip("|").split("|")]
                 if len(cells) == 9 and cells[1] in ("patent", "tuned"):
                     rows.append(cells)
             return rows
         return self.once("tables_md", make)
 
-    def accuracy(self, config):
+    def accuracy(self, variant):
+        """`specsim accuracy` (variant: default, up5k, tuned, up5k_tuned, tbl_aw_N): its rows by slug, the worst
+        core relative error over all rows, and what fixed point adds at most."""
         def make():
-            args = [self.specsim, "accuracy"] + ([] if config == "default" else ["--config", config])
-            out = self.run(args)
+            args = {"default": [], "up5k": ["--config", "up5k"], "tuned": ["--mode", "tuned"],
+                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"]}.get(variant)
+            if args is None and variant.startswith("tbl_aw_"):
+                args = ["--tbl-aw", variant[7:]]
+            if args is None:
+                raise DocError("unknown accuracy run %s" % variant)
+            out = self.run([self.specsim, "accuracy"] + args)
             rows = {}
             for line in out.splitlines():
                 if line.startswith("| n = "):
-                    cells = [c.strip() for c in line.strip("|").split("|")]
-                    rows[cells[0]] = cells
+                    cells = [c.strip() for c in line.strip().strip("|").split("|")]
+                    rows[slug(cells[0])] = cells
             m = re.search(r"Fixed point adds at most ([\d.]+) %.*\(n = (\d+)\)", out)
-            return {"rows": rows, "added": float(m.group(1)) if m else None, "text": out}
-        return self.once("accuracy." + config, make)
+            worst = max(rows.values(), key=lambda c: percent(c[3], "accuracy"))
+            return {"rows": rows, "added": float(m.group(1)) if m else None, "added_n": int(m.group(2)) if m else None,
+                    "worst_core": worst[3], "text": out}
+        return self.once("accuracy." + variant, make)
+
+    def fig8_mode(self, mode):
+        """`specsim fig8 --mode MODE`'s text: per table k, the range of n whose relative error stays within 1 %."""
+        return self.once("fig8_mode." + mode, lambda: self.run([self.specsim, "fig8", "--mode", mode]))
 
     def fig8_all(self):
         """q(n) and a(n) in %, every n, from `specsim fig8 --all` (double precision, the Fig. 10 rule)."""
@@ -141,6 +217,19 @@ class Facts:
                 raise DocError("specsim fig8 --all printed %d rows of q(n)" % len(q))
             return q, a
         return self.once("fig8_all", make)
+
+    def gtest(self, test):
+        """The properties a GoogleTest test records (RecordProperty), from a run of that test alone."""
+        def make():
+            d = tempfile.mkdtemp(prefix="docgen_")
+            out = os.path.join(d, "t.json")
+            self.run([os.path.join(self.build, "spec_tests"), "--gtest_filter=" + test, "--gtest_output=json:" + out])
+            for suite in json.load(open(out))["testsuites"]:
+                for t in suite["testsuite"]:
+                    if "%s.%s" % (suite["name"], t["name"]) == test:
+                        return t
+            raise DocError("test %s did not run" % test)
+        return self.once("gtest." + test, make)
 
     def data(self, name):
         def make():
@@ -158,12 +247,17 @@ class Facts:
             return self.header("default")[parts[1]]
         if head.startswith("cfg_"):
             return self.header(head[4:])[parts[1]]
-        if head == "render":
-            return walk(self.render(), parts[1:], key)
-        if head == "render_tuned":
-            return walk(self.render("tuned"), parts[1:], key)
-        if head == "compare":   # compare.rel|abs.<row slug>.<column>: the number in that cell
-            return percent(self.compare()[parts[1]][parts[2]][int(parts[3])], key)
+        if head in docgen_shader.HEADS:   # spec_setup / spec_shader (issue 13): scripts/docgen_shader.py
+            return docgen_shader.get(self, head, parts, key)
+        if head.startswith("render"):   # render[_VARIANT].<path in the statistics JSON> (RENDERS)
+            return walk(self.render(head), parts[1:], key)
+        if head == "compare":   # compare.rel|abs.<row slug>.<column>[.n]: the number in that cell (or its n)
+            return cell_value(self.compare()[parts[1]][parts[2]][int(parts[3])], parts[4:], key)
+        if head == "tables":   # tables.<k slug>.<mode>.<ROM 12 slug>.<column>[.n]: a cell of specsim tables' table
+            rows = [r for r in self.tables_md() if slug(r[0]) == parts[1] and r[1] == parts[2] and slug(r[2]) == parts[3]]
+            if len(rows) != 1:
+                raise DocError("fact %s: %d rows of docs/tables.md match" % (key, len(rows)))
+            return cell_value(rows[0][TABLES_COLUMNS[parts[4]]], parts[5:], key)
         if head == "data":
             return walk(self.data(parts[1]), parts[2:], key)
         if head in ("accuracy", "accuracy_up5k"):
@@ -171,6 +265,44 @@ class Facts:
             if parts[1] == "added":
                 return acc["added"]
             raise DocError("unknown fact %s" % key)
+        if head == "acc":   # acc.<variant>.added|added_n, acc.<variant>.worst[.n], acc.<variant>.rows.<slug>.<col>[.n]
+            acc = self.accuracy(parts[1])
+            if parts[2] in ("added", "added_n"):
+                return acc[parts[2]]
+            if parts[2] == "worst":
+                return cell_value(acc["worst_core"], parts[3:], key)
+            if parts[2] == "rows":
+                return cell_value(acc["rows"][parts[3]][int(parts[4])], parts[5:], key)
+            raise DocError("unknown fact %s" % key)
+        if head == "ice40":   # ice40.9|12.<configuration>: SB_RAM40_4K of that ROM (Yosys synth_ice40)
+            return self.ice40_brams(parts[1], parts[2])
+        if head == "tool" and parts[1] == "yosys":
+            return self.yosys_version()
+        if head == "desc":   # desc.<FIELD>[.<config>]: the descriptor field's bits as [msb:lsb]
+            h = self.header(parts[2] if len(parts) > 2 else "default")
+            width = {"C": h["C_W"], "N": h["N_W"], "L": h["L_W"], "ZETA0": h["ANG_W"], "DZETA": h["ANG_W"]}[parts[1]]
+            lsb = h["DESC_%s_LSB" % parts[1]]
+            return "[%d:%d]" % (lsb + width - 1, lsb)
+        if head == "romline":   # romline.<image in rom/>: the image's first line (specrom's parameter comment)
+            return open(os.path.join(ROOT, "rom", parts[1] + ".hex")).readline().strip()
+        if head == "gtest":   # gtest.<Suite>.<Test>.<property>: what the test records (a number)
+            return float(walk(self.gtest(parts[1] + "." + parts[2]), parts[3:], key))
+        if head == "src":   # src.<source>.<NAME>.<key>: a constant of a project script (SOURCES), e.g. synth goals
+            return walk(source_constant(parts[1], parts[2]), parts[3:], key)
+        if head == "vrow":   # vrow.<Suite>.<Test>.<column>: a cell of docs/verification.md's bound-ratio rows
+            name = "`%s.%s`" % (parts[1], parts[2])
+            for line in open(os.path.join(ROOT, "docs", "verification.md"), encoding="utf-8"):
+                cells = [c.strip() for c in line.strip().strip("|").split("|")]
+                if cells and cells[0] == name:
+                    return cell_value(cells[int(parts[3])], parts[4:], key)
+            raise DocError("fact %s: no row %s in docs/verification.md" % (key, name))
+        if head == "fig8k":   # fig8k.<mode>.<k> or .<k1>-<k2>: the n whose error stays within 1 % (same for all)
+            ranges = {}
+            for m in re.finditer(r"^\s+(\d+) \| (\S+(?: \(with gaps\))?)\s+\|", self.fig8_mode(parts[1]), re.M):
+                ranges[int(m.group(1))] = m.group(2)
+            lo, _, hi = parts[2].partition("-")
+            got = sorted({ranges[k] for k in range(int(lo), int(hi or lo) + 1)})
+            return "; ".join(got)
         if head in ("q", "a"):   # q(n), a(n) in %
             return self.fig8_all()[0 if head == "q" else 1][int(parts[1])]
         if head == "calc":   # small derived values
@@ -187,6 +319,41 @@ def percent(cell, key):
     if not m:
         raise DocError("fact %s: '%s' is not a percentage" % (key, cell))
     return float(m.group(1))
+
+
+def cell_value(cell, rest, key):
+    """A table cell's number: 'P %' -> P, 'P % (n = N)' -> P or, with rest == ['n'], N; a plain number -> it."""
+    if rest == ["n"]:
+        m = re.search(r"\(n = (\d+)\)", cell)
+        if not m:
+            raise DocError("fact %s: '%s' names no n" % (key, cell))
+        return int(m.group(1))
+    if rest:
+        raise DocError("unknown fact %s" % key)
+    if "%" in cell:
+        return percent(cell, key)
+    try:
+        return float(cell) if "." in cell else int(cell)
+    except ValueError:
+        return cell
+
+
+# docs/tables.md's columns by name (tables.* facts)
+TABLES_COLUMNS = {"rom9": 3, "kbit": 4, "double": 5, "core": 6, "abs": 7, "meets": 8}
+
+# The renders facts render[_VARIANT].* come from: specsim render's options (besides --quiet, --out, --stats)
+RENDERS = {"render": ["--scene", "default", "--size", "512", "--model", "rtl", "--mode", "patent"],
+           "render_tuned": ["--scene", "default", "--size", "512", "--model", "rtl", "--mode", "tuned"],
+           "render_perchannel": ["--scene", "default", "--size", "512", "--model", "rtl", "--rgb", "per-channel"],
+           "render_cull": ["--scene", "default", "--size", "512", "--model", "rtl", "--cull-specular"]}
+for _size in (256, 384, 768, 1024):
+    RENDERS["render_s%d" % _size] = ["--scene", "default", "--size", str(_size), "--model", "rtl"]
+for _scene in ("default", "sphere", "torus", "teapot"):
+    for _rule in ("patent", "midpoint"):
+        RENDERS["render_%s_%s" % (_scene, _rule)] = ["--scene", _scene, "--size", "512", "--model", "golden",
+                                                     "--host", _rule]
+    if _scene != "default":
+        RENDERS["render_cull_%s" % _scene] = ["--scene", _scene, "--size", "512", "--model", "golden", "--cull-specular"]
 
 
 def walk(obj, parts, key):
@@ -238,7 +405,71 @@ CALC = {
     "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
     # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
     "bad_input_rows": lambda f: bad_input_rows(),
+    # formats and ranges that follow from the header's widths (docs/interface.md, docs/decisions.md)
+    "ang_int": lambda f: f.header("default")["ANG_W"] - f.header("default")["ANG_FRAC"] - 1,
+    "ang_max": lambda f: 2 ** (f.header("default")["ANG_W"] - f.header("default")["ANG_FRAC"] - 1),
+    "n_max": lambda f: 2 ** f.header("default")["N_W"] - 1,
+    "l_max": lambda f: 2 ** f.header("default")["L_W"] - 1,
+    "l_wrap": lambda f: 2 ** f.header("default")["L_W"],
+    "scale_int": lambda f: f.header("default")["SCALE_W"] - f.header("default")["SCALE_FRAC"],
+    "tbl_dw": lambda f: f.header("default")["TBL_FRAC"] + 1,
+    "rom12_bits": lambda f: f.header("default")["ROM12_DEPTH"] * f.header("default")["TBL_DW"],
+    "rom12_tables": lambda f: f.header("default")["ROM12_DEPTH"] >> f.header("default")["TBL_AW"],
+    "rom12_positions": lambda f: 2 ** f.header("default")["TBL_AW"],
+    "up5k_positions": lambda f: 2 ** f.header("up5k")["TBL_AW"],
+    # cos(pi/2 - h) = sin(h) for h half a table step: the largest k = 1 value the early switch to 0 drops
+    "half_step_cos": lambda f: math.sin(math.pi / 2 / 2 ** f.header("default")["TBL_AW"] / 2),
+    # iCE40 block RAMs of ROM 9 + ROM 12 (Yosys synth_ice40)
+    "ice40_up5k": lambda f: f.ice40_brams("9", "up5k") + f.ice40_brams("12", "up5k"),
+    "ice40_up5k_tuned": lambda f: f.ice40_brams("9", "up5k_tuned") + f.ice40_brams("12", "up5k_tuned"),
+    "rom9_up5k_tuned_bits": lambda f: f.header("up5k_tuned")["SCALE_W"] + f.header("up5k_tuned")["TSEL_W"],
+    # docs/tables.md: can any patent-mode row meet 0.25 %?
+    "tables_patent_meets": lambda f: any(r[8] == "yes" for r in f.tables_md() if r[1] == "patent"),
+    # the renderer (docs/renderer.md, docs/host.md)
+    "render_pixels_per_span": lambda f: f.render()["against_ref"]["rtl"]["model_pixels"] / f.render()["spans"],
+    "render_cycles_per_pixel": lambda f: f.render()["cycles"] / f.render()["against_ref"]["rtl"]["model_pixels"],
+    "render_rtl_max_sizes": lambda f: span_of(f.render("render_s%d" % n)["against_ref"]["rtl"]["max_abs"]
+                                              for n in (256, 384, 768, 1024)),
+    "render_proto_max_sizes": lambda f: span_of(f.render("render_s%d" % n)["against_ref"]["prototype"]["max_abs"]
+                                                for n in (256, 384, 768, 1024)),
+    "cull_spans_pct": lambda f: 100.0 * f.render("render_cull")["cull"]["spans"] / f.render("render_cull")["cull"]["of_spans"],
+    "cull_cycles_pct": lambda f: 100.0 * (1 - f.render("render_cull")["cycles"] / f.render()["cycles"]),
+    "cull_single_pct": lambda f: span_of(round(100.0 * f.render("render_cull_" + sc)["cull"]["spans"] /
+                                               f.render("render_cull_" + sc)["cull"]["of_spans"])
+                                         for sc in ("sphere", "torus", "teapot")),
+    # host.md: for n = 3 (table k = 4, scale sqrt(3/4) < 1) the table is read up to the angle pi/2 / sqrt(3/4),
+    # and at pi/2, where the true BRDF is 0, it gives cos^4(sqrt(3/4) pi/2)
+    "n3_table_end": lambda f: math.pi / 2 / math.sqrt(0.75),
+    "n3_at_right_angle_pct": lambda f: 100.0 * math.cos(math.sqrt(0.75) * math.pi / 2) ** 4,
+    "perchannel_cycles_ratio": lambda f: f.render("render_perchannel")["cycles"] / f.render()["cycles"],
 }
+
+
+# Project scripts whose constants documents quote (src.* facts)
+SOURCES = {"synth": "syn/synth.py", "formal": "formal/formal.py"}
+
+
+def source_constant(source, name):
+    """A literal assigned at the top level of a project script; a list of "--flag", "value" pairs as a dict."""
+    import ast
+    if source not in SOURCES:
+        raise DocError("unknown source %s" % source)
+    tree = ast.parse(open(os.path.join(ROOT, SOURCES[source]), encoding="utf-8").read())
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and any(getattr(t, "id", None) == name for t in node.targets):
+            value = ast.literal_eval(node.value)
+            if isinstance(value, dict):   # tuple keys (e.g. synth.py's GOALS by target and LANES) as "a:b"
+                value = {":".join(map(str, k)) if isinstance(k, tuple) else k: v for k, v in value.items()}
+            if isinstance(value, list) and value and all(isinstance(v, str) for v in value) and value[0].startswith("--"):
+                value = {value[i][2:]: value[i + 1] for i in range(0, len(value) - 1, 2)}
+            return value
+    raise DocError("%s has no constant %s" % (SOURCES[source], name))
+
+
+def span_of(values):
+    """'3' when all values are equal, else 'lo-hi'."""
+    v = sorted(set(values))
+    return "%s" % v[0] if len(v) == 1 else "%s-%s" % (v[0], v[-1])
 
 
 def fmt(value, spec):
@@ -250,6 +481,18 @@ def fmt(value, spec):
         return "{:,}".format(int(value)).replace(",", " ")
     if spec == "yesno":
         return "yes" if value else "no"
+    if spec == "code":   # an inline code span (a mark inside backticks would show as text)
+        return "`%s`" % value
+    if spec == "can":
+        return "can" if value else "cannot"
+    if spec == "int_comma":   # 65536 -> 65,536
+        return "{:,}".format(int(value))
+    if spec == "sci_up":   # an upper bound in one digit: 0.0001917 -> 2e-4
+        e = math.floor(math.log10(value))
+        m = math.ceil(value / 10 ** e - 1e-12)
+        return "%de%d" % (m, e) if m < 10 else "1e%d" % (e + 1)
+    if spec == "thousands":   # 13 896 -> 14 000
+        return "{:,}".format(int(round(value, -3))).replace(",", " ")
     return spec % value
 
 
@@ -258,8 +501,8 @@ def block_render_stats(f):
     s = f.render()["against_ref"]
     rows = [("rtl", "rtl (= golden bit for bit)"), ("prototype", "prototype"),
             ("host", "host alone (its angles, exact cos^n)")]
-    if "shader" in s:
-        rows.insert(1, ("shader", "shader (spec_setup in RTL, then spec_stream)"))
+    s = dict(s, shader=docgen_shader.render_shader(f)["against_ref"]["shader"])
+    rows.insert(1, ("shader", "shader (`--model shader`: spec_setup in RTL too)"))
     out = ["| model | max \\|error\\| | mean \\|error\\| on objects | PSNR | pixels > 4 levels off |",
            "|---|---|---|---|---|"]
     for k, label in rows:
@@ -302,17 +545,30 @@ def block_fig11_waves(f):
 
 
 def block_synth_table(f):
-    rows = f.data("synth")
-    if isinstance(rows, dict):
-        rows = rows.get("results", [])
-    hdr = "| target | top | config | LUT | FF | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | ROMs in BRAM | goal met |"
-    out = [hdr, "|" + "---|" * 12]
+    d = f.data("synth")
+    rows = d.get("results", []) if isinstance(d, dict) else d
+    f1 = lambda v: "-" if v is None else "%.1f" % v
+    out = ["| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst seed | Fmax per seed 1, 2, ... | "
+           "icetime (MHz), worst | Mpixel/s | goal (MHz) | fits | goal met |", "|" + "---|" * 15]
     for r in rows:
-        out.append("| %s | %s | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s |" % (
-            r["target"], r["top"], r["config"], r["lut"], r["ff"], r["bram"], r["dsp"],
-            "-" if r.get("fmax_mhz") is None else "%.1f" % r["fmax_mhz"],
-            "-" if r.get("goal_mhz") is None else "%.1f" % r["goal_mhz"],
-            "yes" if r["fits"] else "no", "no" if r.get("roms_in_logic") else "yes", "yes" if r["met"] else "no"))
+        seeds = r.get("fmax_seeds") or []
+        out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
+            f1(r.get("fmax_mhz")), ", ".join("%.1f" % x for x in seeds if x is not None) or "-",
+            f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), "-" if r.get("goal_mhz") is None else "%g" % r["goal_mhz"],
+            "yes" if r["fits"] else "no", "-" if r.get("goal_mhz") is None else ("yes" if r["met"] else "no")))
+    return "\n".join(out)
+
+
+def block_bench_lanes(f):
+    b = f.data("bench_lanes")
+    out = ["| frame | spans | pixels | pixels per span | LANES = 1 | 2 | 2, PACK = 1 | 4 | 4, PACK = 1 |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    for r in b["rows"]:
+        p = r["ppc"]
+        out.append("| %dx%d | %d | %d | %.1f | %s |" % (
+            r["w"], r["h"], r["spans"], r["pixels"], r["pixels"] / max(1, r["spans"]),
+            " | ".join("%.3f" % p[k]["pixels_per_clock"] for k in ("l1", "l2", "l2p", "l4", "l4p"))))
     return "\n".join(out)
 
 
@@ -367,8 +623,8 @@ def block_tables_excerpt(f):
     return "\n".join(out)
 
 
-def block_formal_steps(f):
-    d = f.data("formal")
+def block_formal_steps(f, name="formal"):
+    d = f.data(name)
     out = ["| job | step | result | time (s) |", "|---|---|---|---|"]
     for r in d["steps"]:
         what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
@@ -378,8 +634,8 @@ def block_formal_steps(f):
     return "\n".join(out)
 
 
-def block_formal_mutants(f):
-    d = f.data("formal_mutants")
+def block_formal_mutants(f, name="formal_mutants"):
+    d = f.data(name)
     out = ["| job | the bug (`formal/formal.py` MUTANTS) | caught by |", "|---|---|---|"]
     for m in d["mutants"]:
         if m["expected"]:
@@ -401,6 +657,9 @@ def block_coverage(f):
         return "%.1f %% (%d/%d)" % (100.0 * hit / tot, hit, tot) if tot else "no statements"
     out = ["| RTL file | line coverage | toggle coverage |", "|---|---|---|"]
     for name, v in sorted(d["files"].items()):
+        if not v["line"][1] and not v["toggle"][1]:
+            out.append("| `%s` | no logic (elaboration-time checks) | - |" % name)
+            continue
         out.append("| `%s` | %s | %s |" % (name, cell(v["line"]), cell(v["toggle"]) if v["toggle"][1] else "-"))
     out.append("| all | %s | %s |" % (cell(d["all"]["line"]), cell(d["all"]["toggle"])))
     out.append("")
@@ -501,7 +760,68 @@ def block_test_long(f):
     return "\n".join(out)
 
 
-BLOCKS = {
+def block_tables(f):
+    """docs/tables.md: what `specsim tables` writes as tables.md (every set, mode and size; about half a minute)."""
+    return f.tables_text()
+
+
+def block_bench_render(f):
+    """make bench-render's table (docs/data/bench_render.json, written by specsim render-bench --json)."""
+    b = f.data("bench_render")
+    st = b["stages"]
+
+    def si(v):
+        return "%.2g M" % (v / 1e6) if v >= 1e6 else "%.3g k" % (v / 1e3)
+
+    def row(what, key, unit, frame=False):
+        r = st[key]
+        if frame:
+            return "| %s | %.3f s | %.3f .. %.3f s |" % (what, r["median"], r["min"], r["max"])
+        return "| %s | %s %s | %s .. %s %s |" % (what, si(r["median"]), unit, si(r["min"]), si(r["max"]), unit)
+    return "\n".join([
+        "Scene %s, %d × %d: %s spans, %s pixels through the model per frame; %d runs." % (
+            b["scene"], b["size"], b["size"], fmt(b["spans"], "int_sep"), fmt(b["model_pixels"], "int_sep"), b["runs"]),
+        "", "| what | median | range of the runs |", "|---|---|---|",
+        row("host span setup (patent's γ)", "host_spans_per_s", "spans/s"),
+        row("golden: specular stage", "golden_pixels_per_s", "pixels/s"),
+        row("rtl: specular stage through the Verilated core", "rtl_pixels_per_s", "pixels/s"),
+        row("rtl: simulated clock", "rtl_cycles_per_s", "cycles/s"),
+        row("ref (two slerps and a pow per pixel)", "ref_pixels_per_s", "pixels/s"),
+        row("whole frame with rtl", "frame_rtl_s", "", True),
+        row("whole frame with golden", "frame_golden_s", "", True),
+        "| golden / rtl (ratio of medians) | %.1f | |" % b["golden_over_rtl"]])
+
+
+def block_host_gamma(f):
+    """The host's share of the error with either γ rule, per built-in scene (specsim render --stats --host RULE)."""
+    out = ["| scene | host alone, patent γ | host alone, midpoint γ | golden, patent γ | golden, midpoint γ |",
+           "|---|---|---|---|---|"]
+    for sc in ("default", "sphere", "torus", "teapot"):
+        p, m = f.render("render_%s_patent" % sc)["against_ref"], f.render("render_%s_midpoint" % sc)["against_ref"]
+        out.append("| %s | %d (mean %.3f) | %d (mean %.3f) | %d | %d |" % (
+            sc, p["host"]["max_abs"], p["host"]["mean_abs"], m["host"]["max_abs"], m["host"]["mean_abs"],
+            p["golden"]["max_abs"], m["golden"]["max_abs"]))
+    return "\n".join(out)
+
+
+def block_added_by_tbl_aw(f):
+    """What fixed point adds in the epicentre for ROM 12 sizes (specsim accuracy --tbl-aw N)."""
+    default = f.header("default")["TBL_AW"]
+    sizes = [10, 11, 12, 13]
+    head = ["2^%d%s" % (n, " (default)" if n == default else "") for n in sizes]
+    vals = ["%.3f %%" % f.accuracy("tbl_aw_%d" % n)["added"] for n in sizes]
+    return "\n".join(["| positions per table | " + " | ".join(head) + " |", "|---|" + "---|" * len(sizes),
+                      "| added relative error, worst n | " + " | ".join(vals) + " |"])
+
+
+BLOCKS = dict(docgen_shader.BLOCKS)
+BLOCKS.update({
+    "formal-shader": lambda f: block_formal_steps(f, "formal_shader"),
+    "formal-mutants-shader": lambda f: block_formal_mutants(f, "formal_mutants_shader"),
+    "tables": block_tables,
+    "bench-render": block_bench_render,
+    "host-gamma": block_host_gamma,
+    "added-by-tbl-aw": block_added_by_tbl_aw,
     "board_split": block_board_split,
     "board_breakdown_icebreaker": block_board_breakdown("icebreaker"),
     "board_bitstream_ulx3s": block_board_bitstream("ulx3s"),
@@ -519,7 +839,8 @@ BLOCKS = {
     "fig11-waves": block_fig11_waves,
     "synth-table": block_synth_table,
     "bench-stream": block_bench_stream,
-}
+    "bench-lanes": block_bench_lanes,
+})
 
 
 def process(path, facts, problems, stale):
@@ -555,6 +876,16 @@ def process(path, facts, problems, stale):
             stale.append("%s: block %s differs from what its command gives now" % (rel, name))
         return m.group(1) + new + m.group(4)
 
+    fence, para = False, ""   # a mark inside a fenced block or an inline code span would show as text
+    for no, line in enumerate(text.splitlines(), 1):
+        if line.startswith("```"):
+            fence, para = not fence, ""
+            continue
+        para = "" if not line.strip() or line.startswith("|") else para
+        for m in re.finditer(r"<!--v:", line):
+            if fence or (para + line[:m.start()]).count("`") % 2:
+                problems.append("%s:%d: a mark inside code shows as text where the markdown is rendered" % (rel, no))
+        para += line + "\n"
     new_text = INLINE.sub(inline, text)
     new_text = BLOCK.sub(block, new_text)
     for m in ERROR_TEXT.finditer(new_text):

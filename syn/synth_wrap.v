@@ -7,6 +7,8 @@
 `include "spec_params.vh"
 module synth_wrap #(
     parameter UNIT = 0,   // 0: spec_stream, 1: spec_unit
+    parameter LANES = 1,  // spec_stream's LANES and PACK
+    parameter PACK = 0,
     parameter TBL_AW = `SPEC_TBL_AW,
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
@@ -34,21 +36,23 @@ module synth_wrap #(
         if (UNIT == 0) begin : g_stream
             reg s_valid, m_ready;
             wire s_ready, m_valid, m_last;
-            wire [15:0] m_data;
+            wire [LANES*16-1:0] m_data;
+            wire [LANES-1:0] m_keep;
             always @(posedge clk) begin
                 s_valid <= strobe_q;
                 m_ready <= sh[127] | strobe_q;
             end
             spec_stream #(
                 .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
-                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                .LANES(LANES), .PACK(PACK)
             ) u_core (
                 .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
                 .s_axis_tdata(sh), .m_axis_tvalid(m_valid), .m_axis_tready(m_ready),
-                .m_axis_tdata(m_data), .m_axis_tlast(m_last)
+                .m_axis_tdata(m_data), .m_axis_tkeep(m_keep), .m_axis_tlast(m_last)
             );
             always @(posedge clk) begin
-                dout <= ^{m_data, m_last};
+                dout <= ^{m_data, m_keep, m_last};
                 flag <= s_ready ^ m_valid;
             end
         end else begin : g_unit

@@ -12,12 +12,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "analysis.h"
+#include "cli.h"
 #include "fit.h"
 #include "spec_model.h"
 
@@ -33,6 +35,19 @@ inline std::string tmpdir() {
         return t;
     }();
     return d;
+}
+
+// A count from the environment for spec_long (SPEC_LONG_PIXELS, SPEC_LONG_SPANS, SPEC_LONG_SEED): dflt when
+// unset; a value that is not a count is bad input (one line, exit 2).
+inline uint64_t env_u64(const char* name, uint64_t dflt) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) return dflt;
+    try {
+        return static_cast<uint64_t>(parse_int(name, v, 0, std::numeric_limits<long long>::max()));
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "spec_long: %s\n", e.what());
+        std::exit(2);
+    }
 }
 
 inline bool exists(const std::string& path) { return std::ifstream(path).good(); }

@@ -29,7 +29,15 @@ endif()
 # the core's RTL: the one file list rtl/spec_core.f
 file(STRINGS ${SRC}/rtl/spec_core.f RTL)
 list(TRANSFORM RTL PREPEND ${SRC}/rtl/)
-execute_process(COMMAND ${IVERILOG} -g2005 -Wall -I${INC} -o ${WORK}/${TB}.vvp -s ${TB} ${ROMPARAMS}
+# TBPARAMS (optional): "NAME=VALUE ..." parameters of the testbench (tb_spec_stream's LANES, PACK)
+set(TBP "")
+if(DEFINED TBPARAMS)
+  separate_arguments(TBPARAMS_LIST UNIX_COMMAND "${TBPARAMS}")
+  foreach(kv ${TBPARAMS_LIST})
+    list(APPEND TBP "-P${TB}.${kv}")
+  endforeach()
+endif()
+execute_process(COMMAND ${IVERILOG} -g2005 -Wall -I${INC} -o ${WORK}/${TB}.vvp -s ${TB} ${ROMPARAMS} ${TBP}
                         ${SRC}/tests/iverilog/${TB}.v ${RTL}
                 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

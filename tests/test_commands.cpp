@@ -56,7 +56,7 @@ TEST(ExitCodes, BadInputIsTwoAndEverythingElseIsThree) {
 TEST(SpecsimHelp, EveryCommandAnswersHelpWithExitZero) {
     const char* cmds[] = {"span", "fig8", "demo", "accuracy", "vectors", "render", "render-bench", "plots",
                           "export-obj", "stream-diagram", "bench-stream", "compare", "tables", "highlight",
-                          "normalize", "parallax"};
+                          "normalize", "parallax", "bench-lanes"};
     for (const char* c : cmds) {
         for (const char* h : {" --help", " -h", " --n 3 --help"}) {
             const CliRun r = specsim(std::string(c) + h);

@@ -68,7 +68,7 @@ namespace {
 struct FakeStream {
     FakeStream(VerilatedContext*, const char*) {}
     CData clk = 0, rst_n = 1, s_axis_tvalid = 0, s_axis_tready = 1, m_axis_tvalid = 0, m_axis_tready = 0,
-          m_axis_tlast = 0;
+          m_axis_tlast = 0, m_axis_tkeep = 1;   // one lane: tkeep always 1
     VlWide<4> s_axis_tdata;
     SData m_axis_tdata = 0;
     static int extra, bad_last_at;

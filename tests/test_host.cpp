@@ -97,8 +97,9 @@ TEST(Host, EndPixelsExact) {
 
 // General spans, N and H both turning: the patent's gamma = angle(H1, H2') is not exact for slerped N and
 // H. N.H differs from the brute force's by at most (psi + phi)^2 / 4 (two functions that agree at t = 0, 1,
-// second derivatives <= (psi + phi)^2), psi = angle(N1, N2), phi = angle(H1, H2). Over 40000 random spans
-// the specular error stayed below 0.092 Is ks (psi + phi)^2 for every n; the test holds it to 0.25.
+// second derivatives <= (psi + phi)^2), psi = angle(N1, N2), phi = angle(H1, H2). The test holds the specular
+// error over 40000 random spans to 0.25 Is ks (psi + phi)^2 and records the worst ratio it saw (docs/host.md
+// quotes it through scripts/docgen.py, which runs this test).
 TEST(Host, GeneralSpansWithinBound) {
     const Model m;
     std::mt19937_64 g(14);
@@ -115,6 +116,7 @@ TEST(Host, GeneralSpansWithinBound) {
         worst_ratio = std::max(worst_ratio, err / bound);
         ASSERT_LE(err, 0.25 * bound + 1e-12) << k << " psi " << psi << " phi " << phi << " n " << n;
     }
+    RecordProperty("worst_error_over_bound", std::to_string(worst_ratio));
     EXPECT_GT(worst_ratio, 0.01);  // the construction is not exact here (else the bound tests nothing)
 }
 

@@ -19,6 +19,9 @@
 #include <vector>
 
 #include "Vspec_stream.h"
+#include "Vspec_stream_l2p_up5k.h"
+#include "Vspec_stream_l4.h"
+#include "Vspec_stream_l4p.h"
 #include "Vspec_stream_tuned.h"
 #include "Vspec_stream_up5k.h"
 #include "Vspec_unit.h"
@@ -34,18 +37,8 @@ using namespace spec;
 using spec::test::random_stream_span;
 
 namespace {
-uint64_t env_u64(const char* name, uint64_t dflt) {
-    const char* v = std::getenv(name);
-    if (!v || !*v) return dflt;
-    try {
-        return static_cast<uint64_t>(parse_int(name, v, 0, std::numeric_limits<long long>::max()));
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "spec_long: %s\n", e.what());
-        std::exit(2);
-    }
-}
-const uint64_t kPixels = env_u64("SPEC_LONG_PIXELS", 10000000);
-const uint64_t kSeed = env_u64("SPEC_LONG_SEED", 1);
+const uint64_t kPixels = spec::test::env_u64("SPEC_LONG_PIXELS", 10000000);
+const uint64_t kSeed = spec::test::env_u64("SPEC_LONG_SEED", 1);
 
 
 // What each run checked, for SPEC_LONG_JSON (make test-long writes docs/data/test_long.json, the table of
@@ -107,9 +100,11 @@ struct Expected {
 // per-cycle probabilities for the source offering and the sink being ready (1/1, 1/0.9, 0.9/1, 0.5/0.5,
 // 1/0.1, 0.2/1, 0.97/0.97); a reset at a random point about 40 times a run. Every pixel and tlast is checked against the model in order; after a reset the
 // pixels of spans accepted before it must not appear. AXI rules are checked each cycle.
-template <class V>
+// LANES > 1 (issue 14): each beat's kept slots are checked in order against the model; PACK = 0: a span's
+// last pixel ends its beat and tlast is set exactly there, PACK = 1: tlast exactly on beats that end a span.
+template <class V, int L = 1, bool P = false>
 void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed) {
-    StreamDriver<V> d;
+    StreamDriver<V, L, P> d;
     auto& t = d.top();
     std::mt19937_64 rng(seed);
     std::deque<Expected> want;
@@ -117,8 +112,10 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
     bool offering = false;
     SpanRegs cur;
     bool prev_stalled = false;
-    uint32_t prev_data = 0;
+    uint64_t prev_data = 0;
+    unsigned prev_keep = 0;
     bool prev_last = false;
+    const uint64_t slot_mask = (uint64_t(1) << spec_params::OUT_W) - 1;
     double p_ready = 1.0, p_offer = 1.0;
     const uint64_t reset_gap = std::max<uint64_t>(2000, pixels / 25);   // a reset every ~reset_gap cycles
     uint64_t next_reset = reset_gap / 4 + rng() % reset_gap;
@@ -147,18 +144,39 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
         // AXI4-Stream source rules on the pixel side
         if (prev_stalled) {
             ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready, cycle " << d.cycle();
-            ASSERT_EQ(t.m_axis_tdata, prev_data) << "tdata changed while stalled, cycle " << d.cycle();
+            ASSERT_EQ(uint64_t(t.m_axis_tdata), prev_data) << "tdata changed while stalled, cycle " << d.cycle();
+            ASSERT_EQ(unsigned(t.m_axis_tkeep), prev_keep) << "tkeep changed while stalled, cycle " << d.cycle();
             ASSERT_EQ(t.m_axis_tlast != 0, prev_last) << "tlast changed while stalled, cycle " << d.cycle();
         }
         const bool in_fire = t.s_axis_tvalid && t.s_axis_tready && !reset_now;
         const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
         if (out_fire) {
-            ASSERT_FALSE(want.empty()) << "a pixel nobody asked for, cycle " << d.cycle();
-            const Expected e = want.front();
-            want.pop_front();
-            ASSERT_EQ(t.m_axis_tdata, e.value) << "span " << e.span << " pixel " << e.index << " cycle " << d.cycle();
-            ASSERT_EQ(t.m_axis_tlast != 0, e.last) << "tlast, span " << e.span << " pixel " << e.index;
-            ++checked;
+            const unsigned keep = unsigned(t.m_axis_tkeep);
+            const bool tlast = t.m_axis_tlast != 0;
+            int kept = 0;
+            while (kept < L && ((keep >> kept) & 1u)) ++kept;
+            ASSERT_TRUE(kept > 0 && (keep >> kept) == 0) << "tkeep " << keep << " not slots 0 .. k-1, cycle " << d.cycle();
+            bool ends = false, ends_last = false;
+            for (int j = 0; j < kept; ++j) {
+                ASSERT_FALSE(want.empty()) << "a pixel nobody asked for, cycle " << d.cycle();
+                const Expected e = want.front();
+                want.pop_front();
+                ASSERT_EQ((uint64_t(t.m_axis_tdata) >> (j * spec_params::OUT_W)) & slot_mask, e.value)
+                    << "span " << e.span << " pixel " << e.index << " slot " << j << " cycle " << d.cycle();
+                if (e.last) {
+                    ends = true;
+                    ends_last = j == kept - 1;
+                    if (!P) ASSERT_TRUE(ends_last) << "a beat goes on after span " << e.span << "'s last pixel";
+                }
+                ++checked;
+            }
+            if (P) {
+                ASSERT_EQ(tlast, ends) << "tlast on a beat that " << (ends ? "ends" : "does not end") << " a span, cycle "
+                                       << d.cycle();
+            } else {
+                ASSERT_EQ(tlast, ends_last) << "tlast, cycle " << d.cycle();
+                if (kept < L) ASSERT_TRUE(ends_last) << "empty slots in a beat that ends no span, cycle " << d.cycle();
+            }
         }
         // no deadlock: a ready sink waits only for the pipeline while spans are outstanding (the formal bound
         // is 19 cycles at the reduced widths; 1000 leaves room for any configuration) - fail, never hang
@@ -166,7 +184,8 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
         ASSERT_LT(idle_ready, 1000u) << "no pixel for 1000 cycles of a ready sink with " << want.size()
                                      << " pixels outstanding, cycle " << d.cycle();
         prev_stalled = t.m_axis_tvalid && !t.m_axis_tready && !reset_now;
-        prev_data = t.m_axis_tdata;
+        prev_data = uint64_t(t.m_axis_tdata);
+        prev_keep = unsigned(t.m_axis_tkeep);
         prev_last = t.m_axis_tlast != 0;
         if (in_fire) {
             const auto px = m.span(cur);
@@ -200,6 +219,18 @@ void stream_run(const char* name, const Model& m, uint64_t pixels, uint64_t seed
 }
 
 TEST(Long, StreamAgainstModel) { stream_run<Vspec_stream>("spec_stream", Model(), kPixels, kSeed * 1000 + 1); }
+// LANES = 4 (PACK = 0 and 1) and LANES = 2 packed in the up5k configuration (issue 14), a tenth of the pixels
+TEST(Long, StreamFourLanesAgainstModel) {
+    stream_run<Vspec_stream_l4, 4, false>("spec_stream (LANES = 4)", Model(), kPixels / 10, kSeed * 1000 + 5);
+}
+TEST(Long, StreamFourLanesPackedAgainstModel) {
+    stream_run<Vspec_stream_l4p, 4, true>("spec_stream (LANES = 4, PACK = 1)", Model(), kPixels / 10,
+                                          kSeed * 1000 + 6);
+}
+TEST(Long, StreamTwoLanesPackedUp5kAgainstModel) {
+    stream_run<Vspec_stream_l2p_up5k, 2, true>("spec_stream (up5k, LANES = 2, PACK = 1)",
+                                               Model(config_format("up5k")), kPixels / 10, kSeed * 1000 + 7);
+}
 TEST(Long, StreamUp5kAgainstModel) {
     stream_run<Vspec_stream_up5k>("spec_stream (up5k)", Model(config_format("up5k")), kPixels / 10, kSeed * 1000 + 3);
 }

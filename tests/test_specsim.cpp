@@ -28,6 +28,12 @@ TEST(Specsim, SpanRtlAndGoldenPrintTheSameCharacters) {
         ASSERT_EQ(stream.code, 0) << stream.err;
         EXPECT_EQ(rtl.out, gold.out) << s;
         EXPECT_EQ(stream.out, rtl.out) << s;
+        // LANES = 2, 4 and 4 packed print what spec_unit prints (issue 14)
+        for (const char* lanes : {" --lanes 2", " --lanes 4", " --lanes 4 --pack"}) {
+            CliRun wide = specsim(std::string("span ") + s + " --model stream" + lanes);
+            ASSERT_EQ(wide.code, 0) << wide.err;
+            EXPECT_EQ(wide.out, rtl.out) << s << lanes;
+        }
         auto l = lines(rtl.out);
         ASSERT_GE(l.size(), 2u);
         EXPECT_EQ(l[0], "i,value");

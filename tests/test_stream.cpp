@@ -82,7 +82,7 @@ TEST(SpecStream, OnePixelPerClockAcrossSpans) {
         const uint64_t cycles = d.cycle() - c0 - StreamDriver<Vspec_stream>::kDrainCycles;
         expect_pixels(m, spans, px);
         // no stalls anywhere: one pixel every clock after the pipeline fills
-        EXPECT_LE(cycles, expect + 24) << "max_len " << max_len;
+        EXPECT_LE(cycles, expect + spec_params::STREAM_LATENCY + 4) << "max_len " << max_len;
     }
 }
 

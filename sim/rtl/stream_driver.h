@@ -71,11 +71,16 @@ struct StreamError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-template <class V>
+// LANES pixels per beat (spec_stream's LANES), PACK as the core's (docs/stream.md): run() checks each beat's
+// m_axis_tkeep and m_axis_tlast against the spans and returns the pixels one by one.
+template <class V, int LANES = 1, bool PACK = false>
 class StreamDriver {
+    static_assert(LANES == 1 || LANES == 2 || LANES == 4, "LANES is 1, 2 or 4");
+    static_assert(LANES * spec_params::OUT_W <= 64, "m_axis_tdata must fit 64 bits");
+
 public:
     // Cycles run() keeps the sink ready after the last expected pixel, watching for pixels nobody asked for:
-    // more than the core's latency from an accepted descriptor to its first pixel (20, 22 with INTERP = 1).
+    // more than the core's latency from an accepted descriptor to its first pixel (spec_params::STREAM_LATENCY).
     static constexpr int kDrainCycles = 64;
 
     StreamDriver() : h_(active_low<V>([](V& v) -> CData& { return v.rst_n; })) {
@@ -86,6 +91,7 @@ public:
     V& top() { return h_.top(); }
     Harness<V>& harness() { return h_; }
     uint64_t cycle() const { return h_.cycle(); }
+    uint64_t beats() const { return beats_; }  // beats the sink has taken so far
     // Descriptors with every ignored bit set (docs/stream.md: "the bits between the fields are ignored").
     void set_ignored_bits(bool ones) { ignored_ones_ = ones; }
 
@@ -94,9 +100,12 @@ public:
     void step() { h_.tick(); }
 
     // Runs the spans through, with random stalls on both sides, and returns the pixels in order. After the
-    // last expected pixel the sink stays ready for kDrainCycles more cycles: a pixel in that time, or a
-    // pixel whose tlast is not where its span ends, throws StreamError. `on_cycle` (optional) is called
-    // each cycle before the edge, after the inputs are set.
+    // last expected pixel the sink stays ready for kDrainCycles more cycles: a pixel in that time, or a beat
+    // that breaks the rules below, throws StreamError. Each beat: m_axis_tkeep holds slots 0 .. k-1 (k >= 1);
+    // with PACK = 0 a beat holds one span's pixels, all slots unless it is the span's last beat, and
+    // m_axis_tlast marks the span's last beat; with PACK = 1 m_axis_tlast marks a beat that holds a span's
+    // last pixel. StreamPixel::last: the pixel ends its span and its beat has m_axis_tlast. `on_cycle`
+    // (optional) is called each cycle before the edge, after the inputs are set.
     std::vector<StreamPixel> run(const std::vector<SpanRegs>& spans, const Stalls& st, std::mt19937_64& rng,
                                  uint64_t max_cycles = 0, const std::function<void(V&)>& on_cycle = {}) {
         size_t expect = 0;
@@ -136,22 +145,7 @@ public:
             if (on_cycle) on_cycle(t);
             const bool in_fire = t.s_axis_tvalid && t.s_axis_tready;
             const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
-            if (out_fire) {
-                const size_t k = out.size();
-                const bool last = t.m_axis_tlast != 0;
-                if (k >= expect) {
-                    throw StreamError("spec_stream: an extra pixel (" + std::to_string(t.m_axis_tdata) +
-                                      (last ? ", tlast" : "") + ") after the " + std::to_string(expect) +
-                                      " the spans asked for");
-                }
-                while (span_end[span_of_next_pixel] < k) ++span_of_next_pixel;
-                const bool want_last = span_end[span_of_next_pixel] == k;
-                if (last != want_last) {
-                    throw StreamError("spec_stream: pixel " + std::to_string(k) + " (span " +
-                                      std::to_string(span_of_next_pixel) + ") has tlast = " + (last ? "1" : "0"));
-                }
-                out.push_back({t.m_axis_tdata, last});
-            }
+            if (out_fire) take_beat(span_end, expect, span_of_next_pixel, out);
             step();
             if (in_fire) {
                 offering = false;
@@ -163,6 +157,54 @@ public:
     }
 
 private:
+    // The beat on m_axis (valid and ready in this cycle): checked and appended to `out` pixel by pixel.
+    void take_beat(const std::vector<size_t>& span_end, size_t expect, size_t& span_at,
+                   std::vector<StreamPixel>& out) {
+        V& t = h_.top();
+        const uint64_t data = static_cast<uint64_t>(t.m_axis_tdata);
+        const unsigned keep = static_cast<unsigned>(t.m_axis_tkeep);
+        const bool tlast = t.m_axis_tlast != 0;
+        const std::string at = " (beat " + std::to_string(beats_) + ", cycle " + std::to_string(h_.cycle()) + ")";
+        int kept = 0;
+        while (kept < LANES && ((keep >> kept) & 1u)) ++kept;
+        if (kept == 0 || (keep >> kept) != 0) {
+            throw StreamError("spec_stream: m_axis_tkeep " + std::to_string(keep) + " is not slots 0 .. k-1" + at);
+        }
+        bool ends = false;          // the beat holds a span's last pixel
+        bool ends_at_last = false;  // ... in its last kept slot
+        for (int j = 0; j < kept; ++j) {
+            const size_t k = out.size();
+            const uint32_t v = static_cast<uint32_t>((data >> (j * spec_params::OUT_W)) &
+                                                     ((uint64_t(1) << spec_params::OUT_W) - 1));
+            if (k >= expect) {
+                throw StreamError("spec_stream: an extra pixel (" + std::to_string(v) + (tlast ? ", tlast" : "") +
+                                  ") after the " + std::to_string(expect) + " the spans asked for" + at);
+            }
+            const bool end = span_end[span_at] == k;
+            if (!PACK && j == kept - 1 && tlast != end) {
+                throw StreamError("spec_stream: pixel " + std::to_string(k) + " (span " + std::to_string(span_at) +
+                                  ") ends a beat with tlast = " + (tlast ? "1" : "0") + at);
+            }
+            out.push_back({v, tlast && end});
+            if (end) {
+                ends = true;
+                ends_at_last = j == kept - 1;
+                ++span_at;
+                if (!PACK && j < kept - 1) {
+                    throw StreamError("spec_stream: a beat goes on after the last pixel of span " +
+                                      std::to_string(span_at - 1) + at);
+                }
+            }
+        }
+        if (!PACK && kept < LANES && !ends_at_last) {
+            throw StreamError("spec_stream: empty slots in a beat that does not end its span" + at);
+        }
+        if (PACK && tlast != ends) {
+            throw StreamError(std::string("spec_stream: m_axis_tlast ") +
+                              (tlast ? "on a beat without" : "missing on a beat with") + " a span's last pixel" + at);
+        }
+        ++beats_;
+    }
     void idle() {
         V& t = h_.top();
         t.s_axis_tvalid = 0;
@@ -170,12 +212,13 @@ private:
         for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = 0;
     }
     Harness<V> h_;
+    uint64_t beats_ = 0;
     bool ignored_ones_ = false;
 };
 
 // spec_stream as a SpanCore: one span at a time, no stalls (specsim span --model stream, the renderer's tests).
 // cycle() counts every clock simulated, the drain after each span (kDrainCycles) included.
-template <class V>
+template <class V, int LANES = 1, bool PACK = false>
 class StreamCore : public SpanCore {
 public:
     StreamCore() : rng_(1) {}
@@ -187,7 +230,7 @@ public:
     uint64_t cycle() const override { return d_.cycle(); }
 
 private:
-    StreamDriver<V> d_;
+    StreamDriver<V, LANES, PACK> d_;
     std::mt19937_64 rng_;
 };
 

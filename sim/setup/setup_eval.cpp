@@ -113,6 +113,67 @@ SpanCheck check_span(const Model& core, const SetupFormat& sf, const SetupInput&
             const std::vector<Bound> bp = bounds(core, sp, opt);
             for (size_t i = 0; i < b.size(); ++i) wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
         }
+        // and H1 tilted by eps toward +-d1, +-d2: d1 the direction of N1 across H1, d2 = H1 x d1 (where H2' is
+        // near -H1 these turn the great circle from H1 to H2' the most; found by fuzz_setup: N2 = -N1, H2 = H1)
+        const Vec n1 = glm::normalize(e.n1), h1 = glm::normalize(e.h1);
+        Vec d1 = n1 - h1 * glm::dot(n1, h1), d2(0.0);
+        if (glm::length(d1) > 1e-9) {
+            d1 = glm::normalize(d1);
+            d2 = glm::cross(h1, d1);
+            const Vec dirs[4] = {d1, -d1, d2, -d2};
+            for (const Vec& d : dirs) {
+                const host::SpanEnds p{e.n1, e.n2, h1 * std::cos(opt.eps) + d * std::sin(opt.eps), e.h2};
+                const host::SpanSetup sp = host::setup_span(core, p, str, in.n, in.l, rule);
+                const std::vector<Bound> bp = bounds(core, sp, opt);
+                for (size_t i = 0; i < b.size(); ++i) {
+                    wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                }
+            }
+            // gamma within the input's resolution of pi (H2' within 2^-14 of -H1, e.g. N2 = -N1 and H2 = H1 up
+            // to the codes' last bit): the circle is the input's rounding's choice; widened over the circles
+            // with tangent T = cos(phi) d1 + sin(phi) d2 at H1, phi = 0 .. pi in 33 steps (N1.T over its whole
+            // range; C's saturation makes a pixel's value not monotonic in it), H2 moved by at most
+            // 2 (pi - gamma) + eps so that H2' = -H1 + a T
+            const double gap = 3.14159265358979323846 - s.gamma;
+            if (!(s.flags & host::kFlat) && gap < opt.pi_gap) {
+                c.ambiguous = true;
+                for (int k = 0; k <= 32; ++k) {
+                    const double phi = 3.14159265358979323846 * k / 32.0;
+                    const Vec t = d1 * std::cos(phi) + d2 * std::sin(phi);
+                    const Vec h2p = glm::normalize(-h1 + t * (2.0 * gap + opt.eps));
+                    const host::SpanEnds p{e.n1, e.n2, e.h1,
+                                           host::carry_to_n1(glm::normalize(e.n2), glm::normalize(e.n1), h2p)};
+                    const host::SpanSetup sp = host::setup_span(core, p, str, in.n, in.l, rule);
+                    const std::vector<Bound> bp = bounds(core, sp, opt);
+                    for (size_t i = 0; i < b.size(); ++i) {
+                        wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                    }
+                }
+            }
+        }
+        // N2 within the input's resolution of -N1: the axis of the rotation N2 -> N1 is the input rounding's
+        // choice (the host takes it from the last bits' residue, the setup from perpendicular(N1) below its
+        // threshold); widened over 32 axes u perpendicular to N1, N2 moved to N1 turned by pi - pi_gap about u
+        const Vec n1u = glm::normalize(e.n1), n2u = glm::normalize(e.n2);
+        const double opp_gap = 2.0 * std::asin(std::min(1.0, glm::length(n1u + n2u) / 2.0));
+        if ((s.flags & host::kOpposite) && opp_gap < opt.pi_gap) {
+            c.ambiguous = true;
+            const double ax = std::fabs(n1u.x), ay = std::fabs(n1u.y), az = std::fabs(n1u.z);
+            const Vec ek = (ax <= ay && ax <= az) ? Vec(1, 0, 0) : (ay <= az ? Vec(0, 1, 0) : Vec(0, 0, 1));
+            const Vec a = glm::normalize(glm::cross(n1u, ek)), bb = glm::cross(n1u, a);
+            const double turn = 3.14159265358979323846 - opt.pi_gap;
+            for (int k = 0; k < 32; ++k) {
+                const double phi = 3.14159265358979323846 * k / 16.0;
+                const Vec u = a * std::cos(phi) + bb * std::sin(phi);
+                const Vec n2alt = n1u * std::cos(turn) + glm::cross(u, n1u) * std::sin(turn);
+                const host::SpanEnds p{e.n1, n2alt, e.h1, e.h2};
+                const host::SpanSetup sp = host::setup_span(core, p, str, in.n, in.l, rule);
+                const std::vector<Bound> bp = bounds(core, sp, opt);
+                for (size_t i = 0; i < b.size(); ++i) {
+                    wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                }
+            }
+        }
     }
     for (size_t i = 0; i < b.size(); ++i) {
         const double r = err[i] / wide[i];

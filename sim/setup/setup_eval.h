@@ -9,9 +9,12 @@
 // Some spans are ill-conditioned: the host's split of N.H = A cos(t gamma - lambda) into C = Is A^n and the
 // angles depends on the end vectors' last bits (gamma below the input's resolution, nearly opposite normals,
 // H2' nearly opposite H1). For those the bound is widened by what the host itself gives for end vectors moved
-// by `eps` (2^-20 rad, a sixteenth of the input format's resolution) in random directions: the setup is then
-// held to "the host's answer for nearly the same span" (backward error eps). Each check reports whether the
-// widened bound was needed.
+// by `eps` (2^-20 rad, a sixteenth of the input format's resolution) in random directions, and for H1 moved
+// by eps toward and away from N1 and across (where H2' is within eps of -H1 every great circle joins them):
+// the setup is then held to "the host's answer for nearly the same span" (backward error eps). Each check
+// reports whether the widened bound was needed. Where gamma is within the input's resolution (2^-14) of pi the
+// great circle from H1 to H2' ~ -H1 is the input rounding's choice, and where N2 is that close to -N1 the axis
+// of the rotation N2 -> N1 is: the bound is widened over all of them (33 circles, 32 axes).
 #pragma once
 
 #include <cstdint>
@@ -36,6 +39,8 @@ struct SpanCheck {
     bool widened = false;     // some pixel needed the widened bound
     uint32_t worst_pixel = 0;
     bool inside = false;      // the worst pixel is inside the epicentre
+    bool ambiguous = false;   // the input's rounding chooses the answer (gamma or the angle of N2 to N1 within
+                              // pi_gap of pi): widened over the circles from H1 to H2' or the axes N2 -> N1
     double out = 0, ref = 0, bound = 0;
 };
 
@@ -43,6 +48,7 @@ struct CheckOptions {
     double eps = 1.0 / (1 << 20);   // backward error allowed for ill-conditioned spans (rad)
     int samples = 16;               // perturbed host evaluations per ill-conditioned span
     double setup_share = 0.002;     // what the setup adds to the core's 0.002 (issue: 0.004 in all)
+    double pi_gap = 1.0 / (1 << 14);   // closer to pi than this (the input's resolution): any circle, any axis
 };
 
 // Checks the pixels `out` (UQ0.c_w codes, l + 1 of them) of a span set up from `in` against the host.

@@ -27,8 +27,26 @@ struct StreamTrace {
     std::vector<SpanRegs> spans;
     std::vector<std::vector<bool>> rows;
     std::vector<uint32_t> pixels;
+    int stall0 = 0;  // the sink stalls in cycles stall0 and stall0 + 1
 };
 StreamTrace stream_trace();
+
+// bench-lanes: spec_stream with LANES = 1, 2, 4 (PACK = 0, 1) on the spans a scene gives at w x h, no stalls.
+struct LanesFigure {
+    std::string name;   // l1, l2, l2p, l4, l4p
+    int lanes = 1;
+    bool pack = false;
+    uint64_t cycles = 0, beats = 0;
+    double ppc = 0;     // pixels per clock
+};
+struct LanesRow {
+    int w = 0, h = 0;
+    uint64_t spans = 0, pixels = 0;
+    std::vector<LanesFigure> figures;
+};
+// The spans the renderer sends to the core for the scene at w x h (registers as quantized for the core).
+std::vector<SpanRegs> scene_spans(const std::string& scene, int w, int h);
+LanesRow bench_lanes_row(const std::vector<SpanRegs>& spans, int w, int h);
 // The text diagram (docs/stream-timing.txt).
 std::string stream_diagram(const StreamTrace& t);
 

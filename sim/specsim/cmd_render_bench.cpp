@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "cli.h"
 #include "commands.h"
+#include "fileutil.h"
 #include "raster.h"
 #include "scene.h"
 #include "shade.h"
@@ -17,7 +19,7 @@ namespace spec {
 
 namespace {
 struct BenchOptions {
-    std::string scene = "default";
+    std::string scene = "default", json;
     int size = 512, runs = 5;
 };
 
@@ -29,6 +31,7 @@ BenchOptions parse_render_bench(int argc, char** argv) {
         if (f == "--size") o.size = int(parse_int(f, a.value(f), 16, 4096));
         else if (f == "--runs") o.runs = int(parse_int(f, a.value(f), 3, 15));
         else if (f == "--scene") o.scene = a.value(f);
+        else if (f == "--json") o.json = a.value(f);
         else throw UsageError("render-bench: unknown option " + f);
     }
     return o;
@@ -127,7 +130,31 @@ void report_render_bench(const BenchOptions& o, const BenchResult& b) {
                 "stage's time; %.2f rtl clock cycles per pixel (2 per pixel + per-span overhead, %.2f pixels a span)\n",
                 median(b.gold_pps) / median(b.rtl_pps), median(b.ref_pps) / median(b.rtl_pps), 100.0 * host_s / rtl_s,
                 median(b.rtl_cps) / median(b.rtl_pps), double(b.model_px) / double(b.spans));
-    (void)o;
+    if (o.json.empty()) return;
+    // The figures as JSON (make bench-render: docs/data/bench_render.json, which docs/renderer.md's table comes
+    // from): per stage the median and the range of the runs.
+    render::write_atomic(o.json, [&](const std::string& tmp) {
+        std::ofstream os(tmp);
+        os.precision(6);
+        auto stage = [&](const char* name, const std::vector<double>& v, bool last) {
+            const auto mm = std::minmax_element(v.begin(), v.end());
+            os << "    \"" << name << "\": {\"median\": " << median(v) << ", \"min\": " << *mm.first << ", \"max\": "
+               << *mm.second << "}" << (last ? "\n" : ",\n");
+        };
+        os << "{\n  \"scene\": \"" << o.scene << "\",\n  \"size\": " << o.size << ",\n  \"runs\": " << o.runs
+           << ",\n  \"spans\": " << b.spans << ",\n  \"model_pixels\": " << b.model_px << ",\n  \"stages\": {\n";
+        stage("host_spans_per_s", b.host_sps, false);
+        stage("golden_pixels_per_s", b.gold_pps, false);
+        stage("rtl_pixels_per_s", b.rtl_pps, false);
+        stage("rtl_cycles_per_s", b.rtl_cps, false);
+        stage("ref_pixels_per_s", b.ref_pps, false);
+        stage("frame_rtl_s", b.frame_rtl, false);
+        stage("frame_golden_s", b.frame_gold, true);
+        os << "  },\n  \"golden_over_rtl\": " << median(b.gold_pps) / median(b.rtl_pps)
+           << ",\n  \"ref_over_rtl\": " << median(b.ref_pps) / median(b.rtl_pps) << "\n}\n";
+        os.close();
+        if (!os) throw InputError("cannot write " + o.json);
+    });
 }
 }  // namespace
 

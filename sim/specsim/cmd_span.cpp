@@ -9,6 +9,9 @@
 #include <stdexcept>
 
 #include "Vspec_stream.h"
+#include "Vspec_stream_l2.h"
+#include "Vspec_stream_l4.h"
+#include "Vspec_stream_l4p.h"
 #include "Vspec_stream_tuned.h"
 #include "cli.h"
 #include "commands.h"
@@ -29,6 +32,9 @@ const char* const kSpanUsage =
     "                        ref (double precision C * max(0, cos(zeta0 + i*dzeta))^n)\n"
     "           --mode M     patent (default: ROM 9 holds sqrt(n/k), Fig. 10 decoder) | tuned (minimax scale and\n"
     "                        table in ROM 9, the RTL Verilated with DECODER_ROM = 1; docs/tuned.md)\n"
+    "           --lanes N    with --model stream: spec_stream with LANES = N pixels per beat (1, 2, 4; patent\n"
+    "                        mode); the same pixels as --model rtl\n"
+    "           --pack       with --model stream --lanes 4: PACK = 1 (a beat may end one span and start the next)\n"
     "           --vcd FILE   with --model rtl: write a waveform of the run\n";
 
 Mode parse_mode_flag(const std::string& fl, const std::string& v) {
@@ -75,6 +81,11 @@ SpanOptions parse_span(int argc, char** argv) {
             }
         } else if (fl == "--vcd") {
             s.vcd = a.value(fl);
+        } else if (fl == "--lanes") {
+            s.lanes = static_cast<int>(parse_int(fl, a.value(fl), 1, 4));
+            if (s.lanes == 3) throw UsageError("--lanes: must be 1, 2 or 4");
+        } else if (fl == "--pack") {
+            s.pack = true;
         } else if (fl == "--mode") {
             s.mode = parse_mode_flag(fl, a.value(fl));
         } else {
@@ -92,6 +103,9 @@ SpanOptions parse_span(int argc, char** argv) {
                          " rad leaves the angle format's range [-8, 8)");
     }
     if (!s.vcd.empty() && s.model != "rtl") throw UsageError("--vcd: only with --model rtl");
+    if (s.lanes != 1 && s.model != "stream") throw UsageError("--lanes: only with --model stream");
+    if (s.lanes != 1 && s.mode != Mode::patent) throw UsageError("--lanes: only in patent mode");
+    if (s.pack && (s.model != "stream" || s.lanes != 4)) throw UsageError("--pack: only with --model stream --lanes 4");
     return s;
 }
 
@@ -104,6 +118,9 @@ std::vector<uint32_t> span_pixels(const SpanOptions& s) {
         core.reset(new ModelCore(m));
     } else if (s.model == "stream") {
         if (s.mode == Mode::tuned) core.reset(new StreamCore<Vspec_stream_tuned>());
+        else if (s.lanes == 2) core.reset(new StreamCore<Vspec_stream_l2, 2>());
+        else if (s.lanes == 4 && s.pack) core.reset(new StreamCore<Vspec_stream_l4p, 4, true>());
+        else if (s.lanes == 4) core.reset(new StreamCore<Vspec_stream_l4, 4>());
         else core.reset(new StreamCore<Vspec_stream>());
     } else if (s.model == "rtl") {
         try {

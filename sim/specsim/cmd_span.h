@@ -14,6 +14,8 @@ struct SpanOptions {
     double c = 0, zeta0 = 0, dzeta = 0;   // the decimal values given
     std::string model = "rtl";         // rtl | stream | golden | ref
     std::string vcd;                   // --vcd (rtl only)
+    int lanes = 1;                     // --lanes (stream only): spec_stream's LANES, 1, 2 or 4
+    bool pack = false;                 // --pack (stream, --lanes 4 only): PACK = 1
     Mode mode = Mode::patent;
 };
 

@@ -20,14 +20,17 @@ StreamTrace stream_trace() {
     auto& t = d.top();
     tr.rows.assign(7, {});
     size_t next = 0;
-    for (int c = 0; c < 32; ++c) {
+    // the sink stalls for two cycles while the second and third spans come out (after the core's latency)
+    const int stall0 = spec_params::STREAM_LATENCY + 4;
+    tr.stall0 = stall0;
+    for (int c = 0; c < spec_params::STREAM_LATENCY + 12; ++c) {
         t.s_axis_tvalid = next < tr.spans.size();
         if (next < tr.spans.size()) {
             uint32_t w[kDescWords];
             pack_descriptor(tr.spans[next], w);
             for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
         }
-        t.m_axis_tready = !(c == 24 || c == 25);  // the sink stalls for two cycles
+        t.m_axis_tready = !(c == stall0 || c == stall0 + 1);
         t.eval();
         const bool in_fire = t.s_axis_tvalid && t.s_axis_tready;
         const bool out_fire = t.m_axis_tvalid && t.m_axis_tready;
@@ -44,7 +47,8 @@ StreamTrace stream_trace() {
 std::string stream_diagram(const StreamTrace& tr) {
     const Model m;
     std::ostringstream o;
-    o << "spec_stream: descriptors l = 2, 0, 1 back to back, the sink stalls in cycles 24-25; one character per\n"
+    o << "spec_stream: descriptors l = 2, 0, 1 back to back, the sink stalls in cycles " << tr.stall0 << "-"
+      << tr.stall0 + 1 << "; one character per\n"
       << "clock, from the Verilated spec_stream (specsim stream-diagram)\n\n";
     const size_t ncyc = tr.rows[0].size();
     std::string ruler;

@@ -15,7 +15,8 @@ namespace spec {
 
 const char* const kVectorsUsage =
     "  vectors  test vectors from the bit-exact model for the Icarus testbench\n"
-    "           --out FILE --spans N (1..5000, default 200) --seed S --mode patent|tuned --tables K,K,...\n";
+    "           --out FILE --spans N (1..5000, default 200) --seed S --mode patent|tuned --tables K,K,...\n"
+    "           --config NAME (a named configuration of specrom, e.g. up5k; before --mode/--tables)\n";
 
 VectorsOptions parse_vectors(int argc, char** argv) {
     VectorsOptions o;
@@ -25,7 +26,13 @@ VectorsOptions parse_vectors(int argc, char** argv) {
         if (fl == "--out") o.out = a.value(fl);
         else if (fl == "--spans") o.spans = static_cast<uint32_t>(parse_int(fl, a.value(fl), 1, 5000));
         else if (fl == "--seed") o.seed = static_cast<uint64_t>(parse_int(fl, a.value(fl), 0, 1LL << 40));
-        else if (fl == "--mode") o.fmt.mode = parse_mode_flag(fl, a.value(fl));
+        else if (fl == "--config") {
+            try {
+                o.fmt = config_format(a.value(fl));
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(fl + ": " + e.what());
+            }
+        } else if (fl == "--mode") o.fmt.mode = parse_mode_flag(fl, a.value(fl));
         else if (fl == "--tables") o.fmt.tables = parse_tables(fl, a.value(fl));
         else throw UsageError("vectors: unknown option " + fl);
     }

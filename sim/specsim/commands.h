@@ -22,6 +22,7 @@ int cmd_export_obj(int argc, char** argv);    // a built-in scene's meshes as an
 
 int cmd_bench_stream(int argc, char** argv);    // cycles/pixel and simulation speed (cmd_bench_stream.cpp)
 int cmd_stream_diagram(int argc, char** argv);  // AXI timing from a simulation (cmd_stream_diagram.cpp)
+int cmd_bench_lanes(int argc, char** argv);     // pixels per clock with LANES = 1, 2, 4 (cmd_bench_lanes.cpp)
 
 int cmd_compare(int argc, char** argv);  // patent vs tuned vs prototype per BRDF range (cmd_compare.cpp)
 int cmd_tables(int argc, char** argv);   // table sets and sizes against ROM bits (cmd_tables.cpp)
@@ -33,6 +34,8 @@ int cmd_parallax(int argc, char** argv);   // companion paper C measured (cmd_pa
 int cmd_setup(int argc, char** argv);           // span ends through spec_setup (cmd_setup.cpp, issue 13)
 int cmd_setup_accuracy(int argc, char** argv);  // the shader against the host per pixel (cmd_setup_accuracy.cpp)
 int cmd_bench_shader(int argc, char** argv);    // spec_shader's pixels per clock (cmd_bench_shader.cpp)
+int cmd_shader_diagram(int argc, char** argv);  // spec_shader's ports cycle by cycle (cmd_shader_diagram.cpp)
+int cmd_setup_vectors(int argc, char** argv);   // Icarus vectors for spec_shader (cmd_setup_vectors.cpp)
 
 // The usage lines, for specsim --help and COMMAND --help: each command's block starts with a line
 // "  NAME  ..." (two spaces, the name) and runs to the next such line.
@@ -43,10 +46,13 @@ extern const char* const kAccuracyUsage;  // cmd_accuracy.cpp
 extern const char* const kVectorsUsage;   // cmd_vectors.cpp
 extern const char* const kRenderUsage;    // render, render-bench, plots, export-obj
 extern const char* const kBenchUsage;     // stream-diagram, bench-stream
+extern const char* const kBenchLanesUsage;  // bench-lanes (cmd_bench_lanes.cpp)
 extern const char* const kTunedUsage;     // compare, tables
 extern const char* const kMethodsUsage;   // highlight, normalize, parallax (methods_usage.cpp)
 extern const char* const kSetupUsage;          // cmd_setup.cpp
 extern const char* const kSetupAccuracyUsage;  // cmd_setup_accuracy.cpp
 extern const char* const kBenchShaderUsage;    // cmd_bench_shader.cpp
+extern const char* const kShaderDiagramUsage;  // cmd_shader_diagram.cpp
+extern const char* const kSetupVectorsUsage;   // cmd_setup_vectors.cpp
 
 }  // namespace spec

@@ -32,15 +32,18 @@ const Command kCommands[] = {
     {"bench-stream", cmd_bench_stream}, {"compare", cmd_compare},
     {"tables", cmd_tables},       {"highlight", cmd_highlight},
     {"normalize", cmd_normalize}, {"parallax", cmd_parallax},
+    {"bench-lanes", cmd_bench_lanes},
     {"setup", cmd_setup},         {"setup-accuracy", cmd_setup_accuracy},
-    {"bench-shader", cmd_bench_shader},
+    {"bench-shader", cmd_bench_shader}, {"shader-diagram", cmd_shader_diagram},
+    {"setup-vectors", cmd_setup_vectors},
 };
 
 std::string full_usage() {
     return std::string("usage: specsim <command> [options]   (specsim <command> --help: that command alone)\n\n"
                        "commands:\n") +
-           kSpanUsage + kFig8Usage + kDemoUsage + kAccuracyUsage + kVectorsUsage + kRenderUsage + kBenchUsage + kTunedUsage + kMethodsUsage +
-           kSetupUsage + kSetupAccuracyUsage + kBenchShaderUsage;
+           kSpanUsage + kFig8Usage + kDemoUsage + kAccuracyUsage + kVectorsUsage + kRenderUsage + kBenchUsage +
+           kBenchLanesUsage + kTunedUsage + kMethodsUsage + kSetupUsage + kSetupAccuracyUsage + kBenchShaderUsage +
+           kShaderDiagramUsage + kSetupVectorsUsage;
 }
 
 // The block of `name` in the usage text: from its line "  name ..." to the next command's line.

@@ -39,7 +39,8 @@ const char* const kRenderUsage =
     "                     the model; default for an OBJ 0,0.35,1)  --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z\n"
     "                     --fov DEGREES (vertical)\n"
     "  render-bench  speed of the render: host spans/s, golden and rtl pixels/s (medians, ratios)\n"
-    "           --size N (default 256)  --runs R (3..15, default 5)  --scene NAME\n"
+    "           --size N (default 512)  --runs R (3..15, default 5)  --scene NAME\n"
+    "           --json FILE (also write the figures as JSON: medians and ranges of the runs)\n"
     "  plots    the patent's Fig. 5 and Fig. 9 redrawn (gnuplot): --out-dir DIR (fig5.png, fig9.png, .dat)\n"
     "  export-obj  a built-in scene's meshes as one OBJ file: --scene NAME --out FILE.obj\n";
 

@@ -3,6 +3,9 @@
 // tb_spec_unit), sends every span as a descriptor with random gaps on s_axis_tvalid, takes the pixels with
 // random m_axis_tready, and compares each pixel and tlast in order; any mismatch, a lost or extra pixel or a
 // hang ends with $fatal (exit 1). +stall=P sets the stall probability in percent (default 30).
+// LANES and PACK (iverilog -P) as spec_stream's: each beat's kept slots (m_axis_tkeep, slots 0 .. k-1) are
+// compared in order; with PACK = 0 a beat ends at its span's last pixel, with tlast there and only there and
+// empty slots only after it; with PACK = 1 tlast is set exactly on the beats that hold a span's last pixel.
 // Widths and the descriptor layout come from the configuration's spec_params.vh (the include path picks it);
 // ROM9_FILE/ROM12_FILE can be set with iverilog -P. 4-state: rst_n is low for exactly one clock at the start,
 // and from then on every output must be 0 or 1 in every cycle.
@@ -11,7 +14,9 @@
 `include "spec_params.vh"
 module tb_spec_stream #(
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
-    parameter ROM12_FILE = `SPEC_ROM12_FILE
+    parameter ROM12_FILE = `SPEC_ROM12_FILE,
+    parameter LANES = 1,
+    parameter PACK = 0
 );
     localparam VMAX = 65536;
     localparam C_W = `SPEC_C_W, ANG_W = `SPEC_ANG_W, N_W = `SPEC_N_W, L_W = `SPEC_L_W, OUT_W = `SPEC_OUT_W;
@@ -24,18 +29,20 @@ module tb_spec_stream #(
     reg [DESC_W-1:0] s_data = {DESC_W{1'b0}};
     wire s_ready;
     wire m_valid, m_last;
-    wire [OUT_W-1:0] m_data;
+    wire [LANES*OUT_W-1:0] m_data;
+    wire [LANES-1:0] m_keep;
     reg m_ready = 1'b0;
 
-    spec_stream #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)) dut (
+    spec_stream #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LANES(LANES), .PACK(PACK)) dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
-        .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tlast(m_last)
+        .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tkeep(m_keep),
+        .m_axis_tlast(m_last)
     );
 
     // after the one rst_n pulse, no output is ever X or Z
     reg reset_done = 1'b0;
     always @(negedge clk) begin
-        if (reset_done && ^{s_ready, m_valid, m_data, m_last} === 1'bx) begin
+        if (reset_done && ^{s_ready, m_valid, m_data, m_keep, m_last} === 1'bx) begin
             $display("tb_spec_stream: an output is X or Z after reset at %0t: tready %b tvalid %b tdata %b tlast %b",
                      $time, s_ready, m_valid, m_data, m_last);
             $fatal(1);
@@ -59,7 +66,7 @@ module tb_spec_stream #(
     reg [31:0] expect_px[0:VMAX-1];
     reg expect_last[0:VMAX-1];
     reg [1023:0] path;
-    integer p, s, nspans, i, npx, got, sent, cycles, stall, seed, len;
+    integer p, s, nspans, i, npx, got, sent, cycles, stall, seed, len, j, kept, ends, ends_at_last;
     integer span_at[0:8191];
 
     initial begin
@@ -122,12 +129,39 @@ module tb_spec_stream #(
             @(posedge clk);
             cycles = cycles + 1;
             if (m_valid && m_ready) begin
-                if (m_data !== expect_px[got][OUT_W-1:0] || m_last !== expect_last[got]) begin
-                    $display("pixel %0d: got %h last %b, model %h last %b", got, m_data, m_last,
-                             expect_px[got][OUT_W-1:0], expect_last[got]);
+                kept = 0;
+                while (kept < LANES && m_keep[kept]) kept = kept + 1;
+                if (kept == 0 || (m_keep >> kept) != 0) begin
+                    $display("beat at pixel %0d: tkeep %b is not slots 0 .. k-1", got, m_keep);
                     $fatal(1);
                 end
-                got = got + 1;
+                ends = 0;
+                ends_at_last = 0;
+                for (j = 0; j < kept; j = j + 1) begin
+                    if (got >= npx) begin
+                        $display("tb_spec_stream: extra pixel in a beat (slot %0d)", j);
+                        $fatal(1);
+                    end
+                    if (m_data[j*OUT_W +: OUT_W] !== expect_px[got][OUT_W-1:0]) begin
+                        $display("pixel %0d (slot %0d): got %h, model %h", got, j, m_data[j*OUT_W +: OUT_W],
+                                 expect_px[got][OUT_W-1:0]);
+                        $fatal(1);
+                    end
+                    if (expect_last[got]) begin
+                        ends = 1;
+                        ends_at_last = (j == kept - 1);
+                        if (PACK == 0 && j != kept - 1) begin
+                            $display("pixel %0d: a beat goes on after its span's last pixel", got);
+                            $fatal(1);
+                        end
+                    end
+                    got = got + 1;
+                end
+                if (m_last !== ends[0] || (PACK == 0 && kept < LANES && !ends_at_last)) begin
+                    $display("beat ending at pixel %0d: tlast %b, tkeep %b, a span ends in it: %0d", got - 1,
+                             m_last, m_keep, ends);
+                    $fatal(1);
+                end
             end
             if (cycles > 20 * npx + 1000) begin
                 $display("tb_spec_stream: no progress after %0d cycles (%0d of %0d pixels)", cycles, got, npx);

@@ -1,0 +1,132 @@
+"""docgen_shader.py - scripts/docgen.py's facts and blocks for spec_setup / spec_shader (issue 13, docs/setup.md).
+
+Facts: setup_cfg.NAME (rom/setup_params.h), render_shader.* (the default scene through the Verilated spec_shader:
+its statistics JSON), shader_latency.pipelined|small (`specsim shader-diagram`). Blocks: setup-accuracy,
+setup-accuracy-summary (`specsim setup-accuracy`), shader-diagram, bench-shader (docs/data/bench_shader.json),
+synth-shader (docs/data/synth_shader.json).
+"""
+import json
+import os
+import re
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+HEADS = ("setup_cfg", "render_shader", "shader_latency")
+
+
+class DocError(Exception):
+    """A fact or block that cannot be made (scripts/docgen.py reports it)."""
+
+
+def setup_header(f):
+    """rom/setup_params.h (setuprom): spec_setup's formats and beat layout."""
+    def make():
+        vals = {}
+        text = open(os.path.join(ROOT, "rom", "setup_params.h")).read()
+        for m in re.finditer(r"constexpr (?:long long|int) (\w+) = (-?\d+);", text):
+            vals[m.group(1)] = int(m.group(2))
+        return vals
+    return f.once("setup_header", make)
+
+
+def render_shader(f):
+    """The default scene at 512 x 512 through the Verilated spec_shader (setup in RTL too): the statistics JSON."""
+    def make():
+        d = tempfile.mkdtemp(prefix="docgen_")
+        stats = os.path.join(d, "stats.json")
+        f.run([f.specsim, "render", "--scene", "default", "--size", "512", "--model", "shader", "--quiet",
+                  "--out", os.path.join(d, "r.png"), "--stats", stats])
+        return json.load(open(stats))
+    return f.once("render_shader", make)
+
+
+def setup_accuracy(f):
+    """`specsim setup-accuracy` (the shader's pixels against the host's double-precision setup): its text."""
+    return f.once("setup_accuracy", lambda: f.run([f.specsim, "setup-accuracy"]))
+
+
+def shader_diagram(f, config):
+    """`specsim shader-diagram`: the text and the latency in clocks."""
+    def make():
+        out = f.run([f.specsim, "shader-diagram", "--config", config])
+        m = re.search(r"latency: (\d+) clocks", out)
+        if not m:
+            raise DocError("specsim shader-diagram printed no latency")
+        return {"text": out, "latency": int(m.group(1))}
+    return f.once("shader_diagram." + config, make)
+
+
+def get(f, head, parts, key):
+    if head == "setup_cfg":
+        return setup_header(f)[parts[1]]
+    if head == "render_shader":
+        obj = render_shader(f)
+        for p in parts[1:]:
+            if not isinstance(obj, dict) or p not in obj:
+                raise DocError("unknown fact %s (no '%s')" % (key, p))
+            obj = obj[p]
+        return obj
+    if head == "shader_latency":   # shader_latency.pipelined|small: clocks from a beat to its first pixel
+        return shader_diagram(f, parts[1])["latency"]
+    raise DocError("unknown fact %s" % key)
+
+
+def block_setup_accuracy(f):
+    return "\n".join(l for l in setup_accuracy(f).splitlines() if l.startswith("|"))
+
+
+def block_setup_accuracy_summary(f):
+    return next(l for l in setup_accuracy(f).splitlines() if l.startswith("worst error / bound"))
+
+
+def block_shader_diagram(f):
+    return "```\n" + shader_diagram(f, "pipelined")["text"].rstrip("\n") + "\n```"
+
+
+def block_bench_shader(f):
+    b = f.data("bench_shader")
+    out = ["| image | spans | pixels | pixels a span | spec_shader clocks | spec_shader pixels per clock | "
+           "spec_stream alone, pixels per clock | shader / stream alone |", "|---|---|---|---|---|---|---|---|"]
+    for r in b["scenes"]:
+        sp, st = r["pixels"] / r["shader_cycles"], r["pixels"] / r["stream_cycles"]
+        out.append("| %s | %d | %d | %.2f | %d | %.4f | %.4f | %.4f |" % (
+            r["image"].replace("x", " × "), r["spans"], r["pixels"], r["pixels"] / r["spans"], r["shader_cycles"],
+            sp, st, sp / st))
+    sm = b["small"]
+    out.append("")
+    out.append("Small configuration (the setup one span at a time), the first %d spans of the 512 × 512 scene: "
+               "%d clocks, %.1f clocks a span (%.5f spans per clock), %.4f pixels per clock." % (
+                   sm["spans"], sm["cycles"], sm["cycles"] / sm["spans"], sm["spans"] / sm["cycles"],
+                   sm["pixels"] / sm["cycles"]))
+    return "\n".join(out)
+
+
+def block_synth_shader(f):
+    d = f.data("synth_shader")
+    out = ["| target | configuration | LUT4 | FF | logic cells (iCE40) | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | "
+           "goal met |", "|" + "---|" * 11]
+    for r in d["results"]:
+        if r.get("pnr_skipped"):
+            fm = "not placed: %s" % r["pnr_skipped"]
+        elif r.get("pnr_error"):
+            fm = "placement failed"
+        else:
+            fm = "-" if r.get("fmax_mhz") is None else "%.1f" % r["fmax_mhz"]
+        out.append("| %s | %s | %d | %d | %s | %d | %d | %s | %s | %s | %s |" % (
+            r["target"], r["config"], r["lut"], r["ff"], r["lc"] if r.get("lc") is not None else "-", r["bram"],
+            r["dsp"], fm, "-" if r.get("goal_mhz") is None else "%.1f" % r["goal_mhz"], "yes" if r["fits"] else "no",
+            "yes" if r["met"] else "no"))
+    out.append("")
+    seeds = d.get("seeds") or [d["seed"]]
+    out.append("(`make synth` on %s, placement seed%s %s%s.)" % (
+        d["date"], "s" if len(seeds) > 1 else "", ", ".join(map(str, seeds)), "; Fmax the worst" if len(seeds) > 1 else ""))
+    return "\n".join(out)
+
+
+BLOCKS = {
+    "setup-accuracy": block_setup_accuracy,
+    "setup-accuracy-summary": block_setup_accuracy_summary,
+    "shader-diagram": block_shader_diagram,
+    "bench-shader": block_bench_shader,
+    "synth-shader": block_synth_shader,
+}
