@@ -317,7 +317,7 @@ fuzz: deps deps-fuzz
 BOARD ?=
 MODE ?= 640x480
 FRAMES ?= 2
-DEVICE ?= 85k
+DEVICE ?= 25k
 BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
 CORE_RTL := $(RTL_CORE) $(RTL_SHADER)
 

@@ -57,16 +57,18 @@ add_executable(boardsim-quick ${BOARDSIM_SOURCES})
 add_dependencies(boardsim-quick rom_up5k)
 target_link_libraries(boardsim-quick PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
-board_verilate(boardsim-quick ulx3s Vulx3s_top_test 128x96 32 -GMODE=2)
+board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
+board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 32 -GMODE=3)
 # boardsim: every board and mode (make board-sim)
 add_executable(boardsim EXCLUDE_FROM_ALL ${BOARDSIM_SOURCES})
 add_dependencies(boardsim rom_up5k)
 target_compile_definitions(boardsim PRIVATE BOARDSIM_FULL=1)
 target_link_libraries(boardsim PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
-board_verilate(boardsim ulx3s Vulx3s_top_test 128x96 32 -GMODE=2)
+board_verilate(boardsim ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
+board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 32 -GMODE=3)
 board_verilate(boardsim icebreaker Vicebreaker_top 320x240 8 -GTEST=0)
-board_verilate(boardsim ulx3s Vulx3s_top 640x480 32 -GMODE=0)
+board_verilate(boardsim ulx3s Vulx3s_top 320x240 8 -GMODE=0)
 board_verilate(boardsim ulx3s Vulx3s_top_720 1280x720 32 -GMODE=1)
 
 # The shared modules on their own, for the unit tests (tests/test_board_rtl.cpp)
@@ -97,8 +99,12 @@ verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vs
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
 verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
   VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
+verilate(vboard_modules SOURCES ${BC}/frame_store.v TOP_MODULE frame_store PREFIX Vframe_store
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GFB_W=64 -GFB_H=48 -GP_W=12)
+verilate(vboard_modules SOURCES ${BC}/frame_store_packed.v TOP_MODULE frame_store_packed PREFIX Vframe_store_packed
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GFB_W=64 -GFB_H=48 -GP_W=12)
 target_sources(spec_tests PRIVATE tests/test_board_rtl.cpp tests/test_board_units.cpp tests/test_board_model.cpp
-  tests/test_board_cli.cpp)
+  tests/test_board_cli.cpp tests/test_board_store.cpp)
 target_link_libraries(spec_tests PRIVATE vboard_modules boardmodel)
 target_compile_definitions(spec_tests PRIVATE BOARDSIM_PATH="$<TARGET_FILE:boardsim-quick>")
 
@@ -112,6 +118,10 @@ foreach(board icebreaker ulx3s)
     COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_BINARY_DIR}
             $<TARGET_FILE:boardsim-quick> run --board ${board} --mode 128x96 --frames 2)
 endforeach()
+# the ULX3S's racing-the-beam architecture (1280 x 720's) on the test raster
+add_test(NAME board_sim_ulx3s_race_quick
+  COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_BINARY_DIR}
+          $<TARGET_FILE:boardsim-quick> run --board ulx3s --mode 128x96-race --frames 2)
 # Icarus accepts the board RTL as Verilog-2005 (each top with its primitives' simulation models)
 add_test(NAME iverilog_boards
   COMMAND ${CMAKE_COMMAND} -DIVERILOG=${IVERILOG} -DSRC=${CMAKE_SOURCE_DIR} -DOUT=${CMAKE_BINARY_DIR}/iverilog_boards

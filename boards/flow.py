@@ -75,7 +75,7 @@ BOARDS = {
     "icebreaker": {
         "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
         "default_modes": ["640x480"], "devices": ["up5k"],
-        "split_k": 8, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
+        "split_k": {"640x480": 8}, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
         # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
         "freq_mhz": {"640x480": 50.25},
         "cells": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"],
@@ -84,9 +84,11 @@ BOARDS = {
     },
     "ulx3s": {
         "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
-        "default_modes": ["640x480"], "devices": ["25k", "85k"],
-        "split_k": 32, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
-        "scene": {"640x480": "640x480", "1280x720": "1280x720"},
+        "default_modes": ["640x480"], "devices": ["25k"],
+        # 640 x 480: the frame buffer design (board_core_fb, a 320 x 240 buffer, K = 8, as the iCEBreaker's);
+        # 1280 x 720: racing the beam with the pipelined setup (K = 32)
+        "split_k": {"640x480": 8, "1280x720": 32}, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
+        "scene": {"640x480": "320x240", "1280x720": "1280x720"},
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
         "freq_mhz": {"640x480": 50.0, "1280x720": 74.29},
@@ -107,14 +109,14 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
     params = dict(d["params"][mode])
     sm = d["scene"][mode]   # the scene the renderer draws (the iCEBreaker: its half-size frame buffer's)
     strings = {
-        "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"]),
+        "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"][mode]),
         "OBJ_FILE": "%s/objects_%s.hex" % (GEN, sm), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, sm),
         "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
         "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": "rom/setup_log2.hex",
         "EXP2_FILE": "rom/setup_exp2.hex",
     }
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
-    chp += " -set SPLIT_K %d " % d["split_k"] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
+    chp += " -set SPLIT_K %d " % d["split_k"][mode] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
     return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
             % (GEN, " ".join(files), chp, d["top"], synth, stat_out))
 
@@ -122,7 +124,7 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
 # its subtree. Blocks: the shader's parts and the board's modules; the rest is the top's glue.
 BLOCKS = ["spec_setup", "spec_stream", "spec_shader", "sphere_spans", "light_gen", "shade_passes", "compose",
-          "compose_seq", "frame_store", "line_buffer", "video_timing", "tmds_encoder", "sync_fifo"]
+          "compose_seq", "frame_store", "frame_store_packed", "line_buffer", "video_timing", "tmds_encoder", "sync_fifo"]
 
 
 def breakdown(stat_text, cells):

@@ -15,6 +15,7 @@ boards/common/compose_seq.v
 boards/common/line_buffer.v
 boards/common/board_core.v
 boards/common/frame_store.v
+boards/common/frame_store_packed.v
 boards/common/board_core_fb.v
 boards/common/tmds_encoder.v
 boards/common/tmds_serializer.v

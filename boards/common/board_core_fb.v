@@ -45,7 +45,12 @@ module board_core_fb #(
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
     parameter LOG2_FILE = "",
-    parameter EXP2_FILE = ""
+    parameter EXP2_FILE = "",
+    // the frame store: 0 = frame_store (16-bit words, nibble write enables: the UP5K's SPRAM), 1 =
+    // frame_store_packed (36-bit words of three pixels: the ECP5's block RAM); FIFO_LUTRAM: the queues in
+    // distributed RAM (the ECP5-25F's block RAM is the frame store's)
+    parameter STORE_PACKED = 0,
+    parameter FIFO_LUTRAM = 0
 ) (
     input  wire        clk,
     input  wire        rst_n,
@@ -165,7 +170,7 @@ module board_core_fb #(
     wire [X_W-1:0] px_x;
     wire [15:0] px_dif, px_spc;
     shade_passes #(
-        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .SHADE_FILE(SHADE_FILE),
+        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
@@ -203,7 +208,7 @@ module board_core_fb #(
     wire [11:0] w_rgb;
     wire [P_W-1:0] wr_pixel = line_base + {{(P_W - X_W) {1'b0}}, px_x};
     wire q_push = clr_push | px_valid;
-    sync_fifo #(.W(CMD_W), .AW(8)) u_queue (
+    sync_fifo #(.W(CMD_W), .AW(8), .LUTRAM(FIFO_LUTRAM)) u_queue (
         .clk(clk), .rst_n(rst_n), .s_valid(q_push), .s_ready(q_ready),
         .s_data(clr_push ? {1'b1, {(P_W - Y_W) {1'b0}}, y, {(OBJ_W + 32) {1'b0}}}
                          : {1'b0, wr_pixel, px_obj, px_dif, px_spc}),
@@ -227,11 +232,21 @@ module board_core_fb #(
     reg [P_W-3:0] fetch_group;
     wire fetch_busy, group_valid;
     wire [47:0] group;
-    frame_store #(.FB_W(FB_W), .FB_H(FB_H), .P_W(P_W), .BG_RGB(BG_RGB)) u_store (
-        .clk(clk), .rst_n(rst_n), .cmd_valid(w_valid), .cmd_ready(cmd_ready_fs), .cmd_clear(w_clear),
-        .cmd_arg(w_arg), .cmd_rgb(w_rgb), .fetch(fetch), .fetch_group(fetch_group),
-        .fetch_busy(fetch_busy), .group(group), .group_valid(group_valid)
-    );
+    generate
+        if (STORE_PACKED != 0) begin : g_packed
+            frame_store_packed #(.FB_W(FB_W), .FB_H(FB_H), .P_W(P_W), .BG_RGB(BG_RGB)) u_store (
+                .clk(clk), .rst_n(rst_n), .cmd_valid(w_valid), .cmd_ready(cmd_ready_fs), .cmd_clear(w_clear),
+                .cmd_arg(w_arg), .cmd_rgb(w_rgb), .fetch(fetch), .fetch_group(fetch_group),
+                .fetch_busy(fetch_busy), .group(group), .group_valid(group_valid)
+            );
+        end else begin : g_nibbles
+            frame_store #(.FB_W(FB_W), .FB_H(FB_H), .P_W(P_W), .BG_RGB(BG_RGB)) u_store (
+                .clk(clk), .rst_n(rst_n), .cmd_valid(w_valid), .cmd_ready(cmd_ready_fs), .cmd_clear(w_clear),
+                .cmd_arg(w_arg), .cmd_rgb(w_rgb), .fetch(fetch), .fetch_group(fetch_group),
+                .fetch_busy(fetch_busy), .group(group), .group_valid(group_valid)
+            );
+        end
+    endgenerate
     // the buffer lines of this display line and the next, as word offsets (registered in two steps from v,
     // which is stable through a line)
     reg [Y_W-1:0] next_line;

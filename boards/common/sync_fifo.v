@@ -10,7 +10,8 @@
 `default_nettype none
 module sync_fifo #(
     parameter W = 16,
-    parameter AW = 8          // storage depth 2^AW
+    parameter AW = 8,         // storage depth 2^AW
+    parameter LUTRAM = 0      // 1: the storage in distributed RAM (ram_style), where block RAM is short
 ) (
     input  wire         clk,
     input  wire         rst_n,
@@ -21,7 +22,6 @@ module sync_fifo #(
     input  wire         m_ready,
     output wire [W-1:0] m_data
 );
-    reg [W-1:0] mem[0:(1 << AW) - 1];
     reg [AW:0] wptr, rptr;               // storage pointers, one extra bit tells full from empty
     reg [W-1:0] rdata;
     reg rd_pending;                      // rdata was read at the last edge (valid in this cycle)
@@ -42,10 +42,21 @@ module sync_fifo #(
     wire rd = st_full && !q2_v && !(q1_v && rd_pending);
     localparam [AW:0] ROOM_LAST = (1 << AW) - 2;
 
-    always @(posedge clk) begin
-        if (push) mem[wptr[AW-1:0]] <= s_data;
-        if (rd) rdata <= mem[rptr[AW-1:0]];
-    end
+    generate
+        if (LUTRAM != 0) begin : g_lutram
+            (* ram_style = "distributed" *) reg [W-1:0] mem[0:(1 << AW) - 1];
+            always @(posedge clk) begin
+                if (push) mem[wptr[AW-1:0]] <= s_data;
+                if (rd) rdata <= mem[rptr[AW-1:0]];
+            end
+        end else begin : g_ram
+            reg [W-1:0] mem[0:(1 << AW) - 1];
+            always @(posedge clk) begin
+                if (push) mem[wptr[AW-1:0]] <= s_data;
+                if (rd) rdata <= mem[rptr[AW-1:0]];
+            end
+        end
+    endgenerate
 
     // the queue after this cycle's pop, then the arriving item (rd_pending) joins at the end
     wire [W-1:0] p0 = pop ? q1 : q0, p1 = pop ? q2 : q1;

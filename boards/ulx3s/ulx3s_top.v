@@ -1,18 +1,27 @@
 // ulx3s_top - the ULX3S reference design (docs/boards.md): the lit, animated sphere scene on the GPDI
 // (HDMI-shaped, DVI-signalled) connector, 640 x 480 at 60 Hz (MODE = 0) or 1280 x 720 at 60 Hz (MODE = 1),
-// TMDS-encoded in the FPGA; MODE = 2 is the 128 x 96 test raster of the quick board simulation (make test).
+// TMDS-encoded in the FPGA; MODE = 2 is the 128 x 96 test raster of the quick board simulation (make test),
+// MODE = 3 the same raster racing the beam (MODE = 1's architecture).
+//
+// Two architectures (docs/boards.md, "ULX3S"):
+//   MODE 0, 2: board_core_fb, the iCEBreaker's: spec_shader's small configuration (one span at a time, the
+//            size of an ECP5-25F) renders at half the size into a frame buffer in block RAM
+//            (frame_store_packed: 320 x 240 RGB444 in 50 of the 56 DP16KD) shown pixel-doubled; the colour's
+//            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame;
+//   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by the pipelined
+//            spec_shader (a span every clock), which does not fit an ECP5-85F (simulation only).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
-//   clk_core the design clock: the whole of board_core (one shader per pass) and the three TMDS encoders;
-//            twice the pixel clock at 640 x 480 (pix_ce every other cycle: the renderer gets two clocks per
-//            pixel, which the pipelined setup's latency needs), the pixel clock itself at 1280 x 720;
+//   clk_core the design clock: the whole of the core and the three TMDS encoders; twice the pixel clock at
+//            640 x 480 (pix_ce every other cycle), the pixel clock itself at 1280 x 720;
 //   clk_bit  5 x the pixel clock: the serializer and the DDR output registers (10 bits per pixel).
 // Crossings (docs/boards.md, "Clock domains"): the encoders' characters and a toggle, core -> bit domain,
 // through tmds_serializer (toggle synchronizer, characters sampled at a fixed phase while stable); the reset,
 // core -> bit domain, through cdc_sync. Nothing crosses back but a status LED.
 // Reset: the PLL's lock and the power button (btn[0], low while pressed), synchronized.
-// LEDs: led[0] = a line was not rendered in time (sticky), led[1] = the serializer lost step with the pixel
-// clock (sticky), led[7] blinks with the frame counter.
+// LEDs: led[0] = a line was not rendered in time (racing) or the write queue overflowed (frame buffer)
+// (sticky), led[1] = the serializer lost step with the pixel clock (sticky), led[7] changes with every
+// rendered frame (frame buffer) or blinks with the frame counter (racing).
 `timescale 1ns / 1ps
 `default_nettype none
 `include "board_params.vh"
@@ -36,16 +45,16 @@ module ulx3s_top #(
     output wire [3:0] gpdi_dp
 );
     // the two rasters (VESA DMT 640x480@60, CTA-861 VIC 4 1280x720@60), from boardgen
-    localparam H_ACTIVE = (MODE == 1) ? `BOARD1280_H_ACTIVE : (MODE == 2) ? `BOARD128_H_ACTIVE : `BOARD640_H_ACTIVE;
-    localparam H_FP = (MODE == 1) ? `BOARD1280_H_FP : (MODE == 2) ? `BOARD128_H_FP : `BOARD640_H_FP;
-    localparam H_SYNC = (MODE == 1) ? `BOARD1280_H_SYNC : (MODE == 2) ? `BOARD128_H_SYNC : `BOARD640_H_SYNC;
-    localparam H_BP = (MODE == 1) ? `BOARD1280_H_BP : (MODE == 2) ? `BOARD128_H_BP : `BOARD640_H_BP;
-    localparam V_ACTIVE = (MODE == 1) ? `BOARD1280_V_ACTIVE : (MODE == 2) ? `BOARD128_V_ACTIVE : `BOARD640_V_ACTIVE;
-    localparam V_FP = (MODE == 1) ? `BOARD1280_V_FP : (MODE == 2) ? `BOARD128_V_FP : `BOARD640_V_FP;
-    localparam V_SYNC = (MODE == 1) ? `BOARD1280_V_SYNC : (MODE == 2) ? `BOARD128_V_SYNC : `BOARD640_V_SYNC;
-    localparam V_BP = (MODE == 1) ? `BOARD1280_V_BP : (MODE == 2) ? `BOARD128_V_BP : `BOARD640_V_BP;
-    localparam H_POL = (MODE == 1) ? `BOARD1280_H_POL : (MODE == 2) ? `BOARD128_H_POL : `BOARD640_H_POL;
-    localparam V_POL = (MODE == 1) ? `BOARD1280_V_POL : (MODE == 2) ? `BOARD128_V_POL : `BOARD640_V_POL;
+    localparam H_ACTIVE = (MODE == 1) ? `BOARD1280_H_ACTIVE : (MODE >= 2) ? `BOARD128_H_ACTIVE : `BOARD640_H_ACTIVE;
+    localparam H_FP = (MODE == 1) ? `BOARD1280_H_FP : (MODE >= 2) ? `BOARD128_H_FP : `BOARD640_H_FP;
+    localparam H_SYNC = (MODE == 1) ? `BOARD1280_H_SYNC : (MODE >= 2) ? `BOARD128_H_SYNC : `BOARD640_H_SYNC;
+    localparam H_BP = (MODE == 1) ? `BOARD1280_H_BP : (MODE >= 2) ? `BOARD128_H_BP : `BOARD640_H_BP;
+    localparam V_ACTIVE = (MODE == 1) ? `BOARD1280_V_ACTIVE : (MODE >= 2) ? `BOARD128_V_ACTIVE : `BOARD640_V_ACTIVE;
+    localparam V_FP = (MODE == 1) ? `BOARD1280_V_FP : (MODE >= 2) ? `BOARD128_V_FP : `BOARD640_V_FP;
+    localparam V_SYNC = (MODE == 1) ? `BOARD1280_V_SYNC : (MODE >= 2) ? `BOARD128_V_SYNC : `BOARD640_V_SYNC;
+    localparam V_BP = (MODE == 1) ? `BOARD1280_V_BP : (MODE >= 2) ? `BOARD128_V_BP : `BOARD640_V_BP;
+    localparam H_POL = (MODE == 1) ? `BOARD1280_H_POL : (MODE >= 2) ? `BOARD128_H_POL : `BOARD640_H_POL;
+    localparam V_POL = (MODE == 1) ? `BOARD1280_V_POL : (MODE >= 2) ? `BOARD128_V_POL : `BOARD640_V_POL;
 
     wire clk_bit, clk_core, locked;
     ulx3s_pll #(.MODE720(MODE == 1)) u_pll (.clk_25mhz(clk_25mhz), .clk_bit(clk_bit), .clk_core(clk_core),
@@ -65,19 +74,41 @@ module ulx3s_top #(
     wire [23:0] rgb;
     wire hs, vs, de, late;
     wire [7:0] frame;
-    board_core #(
-        .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE), .V_FP(V_FP),
-        .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
-        .OUT_BITS(8), .BG_RGB(`BOARD_BG_RGB8),
-        .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
-        .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
-        .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-        .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS((MODE == 1) ? 2 : 1), .SHADER_SMALL(0),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
-    ) u_core (
-        .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .late(late),
-        .frame(frame)
-    );
+    generate
+        if (MODE == 0 || MODE == 2) begin : g_fb
+            wire [11:0] rgb4;
+            board_core_fb #(
+                .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE),
+                .V_FP(V_FP), .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
+                .BG_RGB(`BOARD_BG_RGB4), .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE),
+                .SPLIT_FILE(SPLIT_FILE), .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE),
+                .SIN_E(`BOARD_SIN_E), .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E),
+                .COS_HALF_E(`BOARD_COS_HALF_E), .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1),
+                .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
+                .STORE_PACKED(1), .FIFO_LUTRAM(1)
+            ) u_core (
+                .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb4), .hsync(hs), .vsync(vs), .de(de),
+                .error(late), .frame(frame)
+            );
+            // 4 bits a channel to 8: x 17 (the nibble twice)
+            assign rgb = {rgb4[11:8], rgb4[11:8], rgb4[7:4], rgb4[7:4], rgb4[3:0], rgb4[3:0]};
+        end else begin : g_race
+            board_core #(
+                .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE),
+                .V_FP(V_FP), .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
+                .OUT_BITS(8), .BG_RGB(`BOARD_BG_RGB8),
+                .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
+                .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
+                .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
+                .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS((MODE == 1) ? 2 : 1),
+                .SHADER_SMALL(0), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
+                .EXP2_FILE(EXP2_FILE)
+            ) u_core (
+                .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de),
+                .late(late), .frame(frame)
+            );
+        end
+    endgenerate
 
     // TMDS: blue carries the syncs in its control characters (DVI 1.0)
     wire [9:0] q_r, q_g, q_b;
@@ -99,8 +130,9 @@ module ulx3s_top #(
     );
     ulx3s_gpdi_pins u_pins (.clk_bit(clk_bit), .pairs(pairs), .gpdi_dp(gpdi_dp));
 
-    assign led = {frame[5], 5'd0, out_of_step, late};
+    wire blink = (MODE == 0 || MODE == 2) ? frame[0] : frame[5];
+    assign led = {blink, 5'd0, out_of_step, late};
     wire unused_btn;
-    assign unused_btn = &{1'b0, btn[6:1], frame[7:6], frame[4:0]};
+    assign unused_btn = &{1'b0, btn[6:1], frame};
 endmodule
 `default_nettype wire

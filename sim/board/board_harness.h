@@ -15,7 +15,8 @@ namespace board {
 
 struct HarnessOptions {
     std::string board;        // icebreaker | ulx3s
-    std::string mode;         // 640x480 | 1280x720 (ulx3s) | 128x96 (test raster)
+    std::string mode;         // 640x480 | 1280x720 (ulx3s) | 128x96 (test raster) | 128x96-race (ulx3s: the
+                              // test raster racing the beam, 1280x720's architecture)
     int frames = 2;           // run until this many whole frames have been shown (the iCEBreaker: rendered,
                               // and the displayed frame after each)
     uint64_t limit_ps = 0;    // stop anyway after this much simulated time (0: from the mode, with margin)
@@ -37,6 +38,7 @@ struct HarnessResult {
     // and the largest running disparity seen on a lane (ones minus zeros since the last control period)
     uint64_t tmds_chars = 0, tmds_bad = 0;
     int tmds_max_disparity = 0;
+    uint64_t nibbles_unequal = 0;     // ulx3s frame buffer modes: 8-bit channels that are not 4 bits x 17
 };
 
 // The boards and modes this build has models for ("icebreaker 128x96", ...).

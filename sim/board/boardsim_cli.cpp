@@ -17,6 +17,7 @@ const char* usage() {
            "          the pipeline and against a double-precision rendering; video timing against the standard.\n"
            "          Exit 0 when every check passes, 1 when one fails.\n"
            "          --board icebreaker|ulx3s  --mode 640x480|1280x720 (ulx3s)|128x96 (test raster; default 640x480)\n"
+           "                  |128x96-race (ulx3s: the test raster racing the beam, as 1280x720 does)\n"
            "          --frames N (1..16, default 2)  --out-dir DIR (frame PNGs, error maps, summary.json)  --quiet\n"
            "  split   how much splitting spans at K points per chord helps: the largest error per sphere against\n"
            "          double precision, and the sub-spans per line, for each K\n"
@@ -76,9 +77,13 @@ RunOptions parse_run(int argc, char** argv) {
     if (!o.out_dir.empty() && !std::filesystem::is_directory(o.out_dir)) {
         throw UsageError("run: --out-dir '" + o.out_dir + "' is not a directory");
     }
-    video_mode(o.mode);   // throws for an unknown mode
+    const bool race_test = (o.mode == "128x96-race");
+    if (race_test && o.board != "ulx3s") throw UsageError("run: 128x96-race is a ulx3s mode");
+    video_mode(race_test ? "128x96" : o.mode);   // throws for an unknown mode
     if (o.board == "icebreaker" && o.mode == "1280x720") throw UsageError("run: the icebreaker design has no 1280x720 mode");
-    o.split_k = (o.board == "icebreaker") ? 8 : 32;
+    // the frame buffer designs (the iCEBreaker, the ULX3S at 640x480 and 128x96) split chords at 8 points,
+    // racing the beam (the ULX3S at 1280x720 and 128x96-race) at 32
+    o.split_k = (o.board == "ulx3s" && (o.mode == "1280x720" || race_test)) ? 32 : 8;
     return o;
 }
 

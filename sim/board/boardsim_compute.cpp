@@ -47,12 +47,14 @@ const Model& core_model() {
 RunReport run_board_sim(const RunOptions& o) {
     RunReport rep;
     rep.opt = o;
-    const BoardScene scene = make_board_scene(o.mode, o.split_k);
-    // the iCEBreaker draws into a frame buffer of half the display's size (board_core_fb)
-    const bool fb = (o.board == "icebreaker");
+    const bool race_test = (o.mode == "128x96-race");
+    const BoardScene scene = make_board_scene(race_test ? "128x96" : o.mode, o.split_k);
+    // the iCEBreaker, and the ULX3S at 640x480 (and its 128x96 test raster), draw into a frame buffer of half
+    // the display's size (board_core_fb), 4 bits a channel; the ULX3S at 1280x720 races the beam, 8 bits
+    const bool fb = (o.board == "icebreaker") || (o.mode == "640x480" || o.mode == "128x96");
     const BoardScene fb_scene = fb ? make_board_scene(o.mode == "128x96" ? "64x48" : "320x240", o.split_k) : scene;
     rep.mode = scene.mode;
-    rep.out_bits = (o.board == "icebreaker") ? 4 : 8;
+    rep.out_bits = fb ? 4 : 8;
 
     HarnessOptions ho;
     ho.board = o.board;
@@ -77,6 +79,7 @@ RunReport run_board_sim(const RunOptions& o) {
     if (rep.harness.late) rep.failures.push_back("a line was not rendered in time (late flag)");
     if (rep.harness.out_of_step) rep.failures.push_back("the TMDS serializer lost step with the pixel clock");
     if (rep.harness.tmds_bad) rep.failures.push_back("TMDS characters that do not decode or do not belong");
+    if (rep.harness.nibbles_unequal) rep.failures.push_back("8-bit channels that are not a 4-bit value x 17");
     rep.measured = cap.measure();
     rep.timing = check_timing(rep.measured, scene.mode, rep.harness.pll_mhz);
     if (!rep.timing.ok) rep.failures.push_back("video timing differs from the mode's figures");

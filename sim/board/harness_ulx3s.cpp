@@ -2,7 +2,9 @@
 // DVI receiver does it: the clock lane's rising edges mark the characters (the serializer sends 0000011111,
 // five ones first), the data lanes are sampled in the middle of each of the 10 bit times between two edges,
 // and each character is decoded (control characters carry hsync and vsync on the blue lane, data characters
-// the colour; the syncs keep their last value through data periods).
+// the colour; the syncs keep their last value through data periods). The frame buffer modes (640x480, 128x96)
+// send 4 bits a channel as 8 (x 17): both nibbles must agree, the samples keep 4 bits; led[7] changes with
+// every rendered frame and tags the samples.
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -13,6 +15,8 @@
 #include "verilated.h"
 #include "Vulx3s_top_test.h"
 #include "Vulx3s_top_test___024root.h"
+#include "Vulx3s_top_race.h"
+#include "Vulx3s_top_race___024root.h"
 #ifdef BOARDSIM_FULL
 #include "Vulx3s_top.h"
 #include "Vulx3s_top___024root.h"
@@ -38,8 +42,12 @@ struct Lane {
     }
 };
 
-template <class V>
-void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& cap, HarnessResult& r) {
+template <class V, class Clocks>
+void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& cap, HarnessResult& r,
+         Clocks render_clocks) {
+    const bool fb = r.frame_buffer;
+    int toggles = 0, stop_changes = -1;
+    bool led_prev = false, led_init = false;
     const auto t0 = std::chrono::steady_clock::now();
     top.clk_25mhz = 0;
     top.btn = 1;                 // btn[0] (power button, low while pressed) released
@@ -109,8 +117,19 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
                 s.rgb[0] = cr.d;
                 s.rgb[1] = cg.d;
                 s.rgb[2] = cb.d;
+                if (fb) {
+                    for (int i = 0; i < 3; ++i) {
+                        if (s.de && (s.rgb[i] >> 4) != (s.rgb[i] & 15u)) ++r.nibbles_unequal;
+                        s.rgb[i] = uint8_t(s.rgb[i] >> 4);
+                    }
+                    s.tag = ((top.led >> 7) & 1u) != 0;
+                    if (!led_init) led_prev = s.tag, led_init = true;
+                    if (s.tag != led_prev && ++toggles == o.frames) stop_changes = cap.vsync_changes() + 5;
+                    led_prev = s.tag;
+                }
                 cap.push(s);
-                if (stop_at == 0 && cap.vsync_changes() >= want_changes) stop_at = cap.samples() + 4000;
+                const int need = fb ? stop_changes : want_changes;
+                if (stop_at == 0 && need >= 0 && cap.vsync_changes() >= need) stop_at = cap.samples() + 4000;
                 if (stop_at != 0 && cap.samples() >= stop_at) {
                     r.finished = true;
                     break;
@@ -128,7 +147,7 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
     r.sim_ps = ctx.time();
     r.late = (top.led & 1u) != 0;
     r.out_of_step = (top.led & 2u) != 0;
-    r.render_clocks_max = int(top.rootp->ulx3s_top__DOT__u_core__DOT__render_clocks_max);
+    r.render_clocks_max = render_clocks(top);
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     top.final();
 }
@@ -137,6 +156,7 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
 
 void ulx3s_models(std::vector<std::string>& out) {
     out.push_back("ulx3s 128x96");
+    out.push_back("ulx3s 128x96-race");
 #ifdef BOARDSIM_FULL
     out.push_back("ulx3s 640x480");
     out.push_back("ulx3s 1280x720");
@@ -146,22 +166,38 @@ void ulx3s_models(std::vector<std::string>& out) {
 bool run_ulx3s(const HarnessOptions& o, VideoCapture& cap, HarnessResult& r) {
     // ulx3s_prims.v: 25 MHz x 5 / 1 / 20 x 4 = 25 MHz; 720p: 25 x 104 / 7 x 2 / 10 = 74.2857 MHz
     r.pll_mhz = (o.mode == "1280x720") ? 25.0 * 104.0 / 7.0 * 2.0 / 10.0 : 25.0;
+    // 640x480 and the 128x96 test raster: the frame buffer design (board_core_fb); 1280x720 and 128x96-race:
+    // racing the beam (board_core)
+    r.frame_buffer = (o.mode == "640x480" || o.mode == "128x96");
     auto ctx = std::make_unique<VerilatedContext>();
     Verilated::threadContextp(ctx.get());
     if (o.mode == "128x96") {
         Vulx3s_top_test top(ctx.get());
-        run(top, *ctx, o, cap, r);
+        run(top, *ctx, o, cap, r, [](Vulx3s_top_test& t) {
+            return int(t.rootp->ulx3s_top__DOT__g_fb__DOT__u_core__DOT__frame_clocks_max);
+        });
+        return true;
+    }
+    if (o.mode == "128x96-race") {
+        Vulx3s_top_race top(ctx.get());
+        run(top, *ctx, o, cap, r, [](Vulx3s_top_race& t) {
+            return int(t.rootp->ulx3s_top__DOT__g_race__DOT__u_core__DOT__render_clocks_max);
+        });
         return true;
     }
 #ifdef BOARDSIM_FULL
     if (o.mode == "640x480") {
         Vulx3s_top top(ctx.get());
-        run(top, *ctx, o, cap, r);
+        run(top, *ctx, o, cap, r, [](Vulx3s_top& t) {
+            return int(t.rootp->ulx3s_top__DOT__g_fb__DOT__u_core__DOT__frame_clocks_max);
+        });
         return true;
     }
     if (o.mode == "1280x720") {
         Vulx3s_top_720 top(ctx.get());
-        run(top, *ctx, o, cap, r);
+        run(top, *ctx, o, cap, r, [](Vulx3s_top_720& t) {
+            return int(t.rootp->ulx3s_top__DOT__g_race__DOT__u_core__DOT__render_clocks_max);
+        });
         return true;
     }
 #endif
