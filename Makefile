@@ -310,7 +310,7 @@ fuzz: deps deps-fuzz
 #                     the board's Verilated top for whole frames: PNGs, model and double-precision comparison,
 #                     video timing (build/board-sim/)
 #   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
-#   make flash BOARD=icebreaker|ulx3s [MODE=...] [DEVICE=85k]   program the board (iceprog / openFPGALoader)
+#   make flash BOARD=icebreaker|ulx3s [MODE=...] [DEVICE=25k]   program the board (iceprog / openFPGALoader)
 #   make board-split    the error against split points per chord (docs/data/board_split_*.json)
 #   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
 #   make lint-boards    verilator --lint-only -Wall on the board RTL

