@@ -61,7 +61,7 @@ RunReport run_board_sim(const RunOptions& o) {
     ho.mode = o.mode;
     ho.frames = o.frames;
     // time for the reset, the blanking before the first frame and the frames, at the slowest pixel clock, x 1.5;
-    // with a frame buffer, the rendered frames at 1000 clocks of 50.25 MHz per shader pass (a span takes 934)
+    // with a frame buffer, the rendered frames at 1000 clocks of 50.25 MHz per shader pass (a span takes about 960, make bench)
     const double frame_ps = double(scene.mode.h_total()) * scene.mode.v_total() / (0.9 * scene.mode.pixel_mhz) * 1e6;
     ho.limit_ps = uint64_t((o.frames + 1.2) * frame_ps * 1.5) + 20000000ull;
     if (fb) {
