@@ -21,7 +21,7 @@ module spec_shader #(
     parameter ITERATIVE = 0,
     parameter FIFO_AW = 9,                      // spec_setup's descriptor FIFO (pipelined setup)
     parameter FLAGS_AW = (ITERATIVE != 0) ? 2 : 5,   // flags of up to 2^FLAGS_AW - 1 spans between setup and pixels
-    parameter DELAY_RAM = ITERATIVE,            // spec_stream's side-band delays in block RAM (the small one: UP5K)
+    parameter DELAY_RAM = 0,                    // 1: spec_stream's side-band delays in block RAM (UP5K: fewer cells)
     parameter LOG2_FILE = `SETUP_LOG2_FILE,
     parameter EXP2_FILE = `SETUP_EXP2_FILE,
     // spec_stream's configuration (docs/stream.md)

@@ -53,7 +53,7 @@ TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
 # spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
 # (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
 SHADER_CONFIGS = {
-    "small": {"stream": "up5k", "ITERATIVE": 1},
+    "small": {"stream": "up5k", "ITERATIVE": 1, "DELAY_RAM": 1},
     "pipelined": {"stream": "default", "ITERATIVE": 0},
 }
 SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0}
@@ -171,6 +171,7 @@ def shader_script(target, config, rom9, rom12, json_out, stat_out):
     sc = SHADER_CONFIGS[config]
     params = dict(CONFIGS[sc["stream"]])
     params["ITERATIVE"] = sc["ITERATIVE"]
+    params["DELAY_RAM"] = sc.get("DELAY_RAM", 0)
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
