@@ -214,6 +214,11 @@ def synthesize(board, mode, args, tools, out):
                              "%s/%s.yosys.log" % (rel, name))
     if rc != 0:
         fail("yosys failed for %s (see %s/%s.yosys.log)" % (name, rel, name), 1)
+    if board == "icebreaker":   # one net on two inputs of a LUT can stall nextpnr-ice40's router
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "lut_dedup.py"), os.path.join(ROOT, net)],
+                    "%s/%s.lut_dedup.log" % (rel, name))
+        if rc != 0:
+            fail("lut_dedup failed for %s (see %s/%s.lut_dedup.log)" % (name, rel, name), 1)
     stat_text = open(os.path.join(ROOT, stat)).read()
     for k, pats in d["cells"].items():
         res[k] = count_cells(stat_text, pats)

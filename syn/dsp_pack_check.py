@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""dsp_pack_check: simulates a synthesized netlist before and after syn/dsp_pack.py and compares them cycle
-for cycle (Icarus Verilog), so that a register moved into a DSP block or block RAM is shown to behave as the
-flip-flop it replaced.
+"""dsp_pack_check: simulates a synthesized netlist before and after syn/dsp_pack.py (and, on the iCE40,
+syn/lut_dedup.py) and compares them cycle for cycle (Icarus Verilog), so that a register moved into a DSP block
+or block RAM (or a LUT rewritten) is shown to behave as the flip-flop (or LUT) it replaced.
 
 It synthesizes synth_wrap (spec_stream, as syn/synth.py does), writes both netlists as Verilog, and runs them
 side by side on random serial descriptors, strobes, backpressure and resets for --cycles clocks; any cycle
@@ -214,6 +214,8 @@ def main():
     fam = "ecp5" if args.target == "ecp5-25f" else "ice40"
     log = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), pre, "--out", post, "--family", fam])
     moved = int(re.search(r"(\d+) registers moved", log).group(1))
+    if fam == "ice40":   # and the LUT rewrite that synth.py runs after it
+        run([sys.executable, os.path.join(ROOT, "syn", "lut_dedup.py"), post])
     vfiles = []
     for tag, js in (("pre", pre), ("post", post)):
         v = os.path.join(args.out, tag + ".v")

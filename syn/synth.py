@@ -263,6 +263,12 @@ def one(target, top, config, lanes, args, tools):
             fail("dsp_pack failed for %s (see %s)" % (name, os.path.join(out, name + ".dsp_pack.log")))
         res["dsp_pack"] = [l.split(": ", 1)[1] for l in open(os.path.join(out, name + ".dsp_pack.log"))
                            if l.startswith("dsp_pack: g")]
+    if target == "ice40-up5k":
+        # one net on two inputs of a LUT can stall nextpnr-ice40's router (syn/lut_dedup.py)
+        llog = os.path.join(out, name + ".lut_dedup.log")
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "lut_dedup.py"), json_net], llog)
+        if rc != 0:
+            fail("lut_dedup failed for %s (see %s)" % (name, llog))
     for k, pats in CELLS[target].items():
         res[k] = count_cells(stat_text, pats)
     if "dsp_pack" in res:   # the flip-flops left in the fabric after dsp_pack
