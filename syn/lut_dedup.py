@@ -1,18 +1,25 @@
 #!/usr/bin/env python3
-"""lut_dedup: gives every iCE40 LUT of a Yosys JSON netlist distinct input nets, so that nextpnr-ice40 can route it.
+"""lut_dedup: gives every iCE40 logic cell of a Yosys JSON netlist distinct input nets, so that nextpnr-ice40 can
+route it.
 
-nextpnr-ice40 (0.4) routes each LUT input to a logic cell's input wire and then through the cell's input
-permutation switch. When one net drives two inputs of the same SB_LUT4, both arcs can end on the same input
-wire, whose permutation switch cannot feed two LUT pins: router1 then rips the two arcs up in turn forever (the
-remaining arc count stops moving) and router2 stops on an assertion. Whether it happens depends on the
-placement, so a design routes with some seeds and not with others. Yosys 0.23 leaves such LUTs in the top cell
-of spec_add (x = {p, a, cin} + {p, b, cin}: the cell computes p ^ p ^ carry), one per carry chain.
+nextpnr-ice40 (0.4) routes each input of a logic cell (its LUT's, and an SB_CARRY's I0 and I1, which are the
+cell's LUT inputs 1 and 2) to one of the cell's input wires and then through the cell's input permutation
+switch. When one net drives two of those inputs, both arcs can end on the same input wire, whose permutation
+switch cannot feed two pins: router1 then rips the two arcs up in turn forever (the remaining arc count stops
+moving) and router2 stops on an assertion. Whether it happens depends on the placement, so a design routes with
+some seeds and not with others. Yosys 0.23 leaves two such cells in every spec_add
+(x = {p, a, cin} + {p, b, cin}): the bottom SB_CARRY adds cin + cin (carry out = cin) and the top LUT computes
+p ^ p ^ carry. This pass rewrites them with the same function:
 
-For each SB_LUT4 with the same net on two inputs, and not paired with an SB_CARRY that needs both (an SB_CARRY
-takes its I0 and I1 from the LUT's I1 and I2 pins), this pass rewrites LUT_INIT so that the function reads the
-first of the two inputs in both places, and ties the second to constant 0. The LUT's output is the same for
-every value of its inputs. Used by syn/synth.py after syn/dsp_pack.py on iCE40 netlists; syn/dsp_pack_check.py
-simulates the netlist before and after both passes.
+  * an SB_CARRY with one net on I0 and I1 and a constant carry in CI: its carry out is maj(x, x, CI) = x, and
+    maj(x, 1, 0) = maj(x, 0, 1) = x, so I1 becomes the constant NOT CI (carries whose CI is a net are counted
+    and left as they are);
+  * an SB_LUT4 with the same net on two inputs, and not paired with an SB_CARRY that needs both (the carry takes
+    its I0 and I1 from the LUT's I1 and I2 pins): LUT_INIT is rewritten so that the function reads the first of
+    the two inputs in both places, and the second is tied to constant 0.
+
+Every output is the same for every value of the inputs. Used by syn/synth.py after syn/dsp_pack.py on iCE40
+netlists, and by the iCEBreaker flow; syn/dsp_pack_check.py simulates the netlist before and after both passes.
 
 Usage: lut_dedup.py NETLIST.json [--out OUT.json]
 """
@@ -42,12 +49,21 @@ def merged_init(init, keep, drop):
 
 
 def dedup(mod):
-    """Rewrites the LUTs of one module in place; returns the names of the LUTs changed."""
+    """Rewrites the cells of one module in place; returns (carries changed, LUTs changed, carries left)."""
     carries = set()
-    for c in mod.get("cells", {}).values():
-        if c["type"] == "SB_CARRY":
-            conn = c["connections"]
-            carries.add((conn["I0"][0], conn["I1"][0], conn["CI"][0]))
+    carries_changed, left = [], []
+    for name, c in sorted(mod.get("cells", {}).items()):
+        if c["type"] != "SB_CARRY":
+            continue
+        conn = c["connections"]
+        i0, i1, ci = conn["I0"][0], conn["I1"][0], conn["CI"][0]
+        if not isinstance(i0, str) and i0 == i1:
+            if ci in ("0", "1"):
+                conn["I1"] = ["1" if ci == "0" else "0"]
+                carries_changed.append(name)
+            else:
+                left.append(name)
+        carries.add((conn["I0"][0], conn["I1"][0], conn["CI"][0]))
     changed = []
     for name, c in sorted(mod.get("cells", {}).items()):
         if c["type"] != "SB_LUT4":
@@ -62,7 +78,7 @@ def dedup(mod):
                     c["parameters"]["LUT_INIT"] = merged_init(c["parameters"]["LUT_INIT"], keep, drop)
                     conn[PINS[drop]] = ["0"]
                     changed.append(name)
-    return changed
+    return carries_changed, changed, left
 
 
 def main():
@@ -77,12 +93,16 @@ def main():
     except (OSError, ValueError, KeyError, TypeError) as e:
         print("lut_dedup: cannot read %s as a Yosys JSON netlist: %s" % (args.netlist, e), file=sys.stderr)
         sys.exit(2)
-    changed = []
+    carries, luts, left = [], [], []
     for mod in mods.values():
-        changed += dedup(mod)
+        c, l, k = dedup(mod)
+        carries, luts, left = carries + c, luts + l, left + k
     with open(args.out or args.netlist, "w") as f:
         json.dump(net, f)
-    print("lut_dedup: %d LUTs with one net on two inputs rewritten" % len(changed))
+    print("lut_dedup: %d SB_CARRY and %d SB_LUT4 with one net on two inputs rewritten" % (len(carries), len(luts)))
+    if left:
+        print("lut_dedup: %d SB_CARRY with one net on I0 and I1 and a carry in from the chain left as they are "
+              "(nextpnr's router may stall on them): %s" % (len(left), ", ".join(left[:5])))
 
 
 if __name__ == "__main__":
