@@ -53,11 +53,16 @@ JOBS = {
         expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
                 "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs", "start_q", "len_q"],
         depth=2, bmc=40, cover=48),
-    # spec_stream with LANES = 1, 2 (PACK = 1) and 4 (PACK = 0): bounded checks and covers only (no
-    # induction: the LANES core's internal invariants are not written; fv_spec_stream.v)
+    # spec_stream with LANES = 1, 2 (PACK = 1) and 4 (PACK = 0): the span generator's, the pipeline's and the
+    # output's flags made ports for the helper invariants of fv_spec_stream.v
     "spec_stream": dict(
         core="spec_stream", wrapper="fv_spec_stream", params={},
-        expose=["ce", "u_gen.tk", "u_gen.pl", "u_gen.room", "u_gen.prep_v"],
+        expose=["ce", "u_gen.tk", "u_gen.pl", "u_gen.pl_n", "u_gen.room", "u_gen.prep_v", "u_gen.head_v",
+                "u_gen.tail_v", "u_gen.head_l", "u_gen.head_zg", "u_gen.tail", "u_gen.prep_lq0", "u_gen.prep_lq1",
+                "u_gen.prep_lq2p", "u_gen.prep_nlqm1", "u_gen.prep_nlqm2", "u_gen.prep_lr", "u_gen.r_v",
+                "u_gen.r_ntk", "u_gen.r_last1_bc", "u_gen.r_second", "u_gen.r_end", "u_gen.r_s", "u_gen.bc",
+                "u_gen.r_nt2", "u_gen.bv", "u_gen.blst", "ctl_v", "ctl_l", "have_q", "skid_v", "skid_keep",
+                "skid_last"],
         # the datapath's pixel value is cut off and left free (every value possible): the properties are
         # about flow control, and without the multipliers, ROMs and the 32-bit accumulator z3 is much faster
         cut=["dp_out"],
