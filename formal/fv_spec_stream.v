@@ -180,8 +180,10 @@ module fv_spec_stream #(
             if (f_rst_q && !f_rst_q2) assert (s_axis_tready);
             // the registered enables are their definitions
             if (f_rst_q && rst_n) assert (tk == (ce & room & prep_v) && pl == (~prep_v | tk));
+`ifndef FV_NO_WAIT
             // no deadlock
             assert (f_wait < RESP);
+`endif
         end
         if (f_past && m_axis_tvalid) begin
             assert (keep_ok);
@@ -202,7 +204,10 @@ module fv_spec_stream #(
     // the rest of the running span R, prep, head, tail. Walking through them from the pixel last out (f_ended,
     // f_run) gives every valid slot the span and pixel number it must hold; its last flag must say whether it
     // is that span's (l + 1)-th (l from f_l), and after the walk R, prep, head and tail hold the next spans in
-    // order up to the last accepted one (f_acc). No shadow registers: the core's own flags are walked.
+    // order up to the last accepted one (f_acc).
+    // They are written for LANES = 1 (the running span R's registers of the one-slot generator); with LANES = 2
+    // and 4 they are not asserted (f_hp = 0), and those jobs are bounded checks of the properties above.
+    wire f_hp = f_past && LANES == 1;
     wire [IW-1:0] o_id = m_axis_tvalid ? e_id : f_ended;   // after the output register
     wire [L_W:0] o_run = m_axis_tvalid ? e_run : f_run;
     reg [IW-1:0] k_id;
@@ -285,7 +290,7 @@ module fv_spec_stream #(
             assign q_id[q + 1] = (pv[q] && ends) ? in_id + 1'b1 : in_id;
             assign q_run[q + 1] = !pv[q] ? in_run : ends ? {(L_W + 1) {1'b0}} : in_run + 1'b1;
             always @(*) begin
-                if (f_past && pv[q]) begin
+                if (f_hp && pv[q]) begin
                     assert (d < f_acc - f_ended);                    // a pixel some span asked for
                     assert (in_run <= {1'b0, l});                    // within its span
                     assert (pls[q] == ends);                         // last flag on the span's last only
@@ -296,7 +301,7 @@ module fv_spec_stream #(
         for (p = 0; p < NP; p = p + 1) begin : g_link
             wire [IW-1:0] d = sh_id[p*IW +: IW] - f_ended;
             always @(*) begin
-                if (f_past) begin
+                if (f_hp) begin
                     if (p == 0) assert (sh_id[0 +: IW] == x_id && sh_run[0 +: L_W+1] == x_run);
                     else assert (sh_id[p*IW +: IW] == q_id[p*LANES] && sh_run[p*(L_W+1) +: L_W+1] == q_run[p*LANES]);
                     assert (d <= (p + 2) * LANES);
@@ -311,7 +316,7 @@ module fv_spec_stream #(
             wire [LANES:0] vx = {1'b0, v};
             wire [LANES:0] lsx = {1'b0, ls & v};
             always @(*) begin
-                if (f_past) begin
+                if (f_hp) begin
                     assert ((vx & (vx + 1'b1)) == 0);
                     if (PACK == 0) begin
                         assert ((lsx & {1'b0, v[LANES-1:0] >> 1}) == 0);   // no kept slot after a last
@@ -354,7 +359,7 @@ module fv_spec_stream #(
     wire [WW:0] near = m_axis_tvalid ? 0 : nr[0];
 
     always @(*) begin
-        if (f_past) begin
+        if (f_hp) begin
             // the state a reset edge leaves (the first cycle has rst_n = 0)
             if (!f_past_2) assert (!f_rst_q);
             if (!f_rst_q) begin
@@ -391,16 +396,18 @@ module fv_spec_stream #(
             end
             // every accepted descriptor is somewhere: numbers from f_ended to f_acc - 1 without a gap
             assert (e_next == f_acc);
+`ifndef FV_NO_WAIT
             // how long the sink can wait: the oldest pixel gets one stage closer every cycle
             if (f_acc != f_ended) assert (near <= NC + 3);
             if (f_wait != 0) assert ({1'b0, f_wait} + near <= NC + 3);
+`endif
         end
     end
     // the running span R (one slot per beat)
     generate
         if (LANES == 1) begin : g_r1
             always @(*) begin
-                if (f_past) begin
+                if (f_hp) begin
                     assert (r_v == r_mid);
                     if (r_v) begin
                         assert (bv[0] && r_run <= {1'b0, r_l});
