@@ -22,9 +22,11 @@
 //     next; nothing accepted before the reset comes out after it;
 //   - the span generator's registered enables equal their definitions (tk = ce & room & prep_v,
 //     pl = ~prep_v | tk; rtl/spec_spangen.v).
-// These are checked by bounded model checking from reset (formal.py's bmc cycles) and reached by covers; the
-// induction step would need invariants over the core's internal state (as the one-lane core of issue 12 had),
-// which are not written for the LANES core (docs/verification.md).
+// These are checked by bounded model checking from reset (formal.py's bmc cycles) and reached by covers.
+// For LANES = 1 the wrapper also asserts helper invariants over the core's internal state (below: a shadow of
+// the walk per pipeline position, the skid buffer, the running span, prep, head and tail tied to f_l, the
+// no-deadlock distance), written for a k = 1 induction step; they hold in the bounded check, but the induction
+// step has not been seen to finish (z3 over 15 minutes on a loaded machine), so formal.py's depth is still None.
 `default_nettype none
 `include "spec_params.vh"
 module fv_spec_stream #(
