@@ -71,7 +71,7 @@ build: deps configure
 ctest: build
 	cd $(BUILD) && ctest -j$(JOBS) --output-on-failure
 
-test: ctest lint
+test: ctest lint lint-boards
 	@echo "make test: all tests and lint passed"
 
 lint: deps
@@ -304,3 +304,64 @@ fuzz: deps deps-fuzz
 	    "-DCMAKE_CXX_FLAGS=$(SAN_FLAGS) -fsanitize=fuzzer-no-link"
 	$(call cmake_build,$(BUILD)-fuzz,--target $(addprefix fuzz_,cli format host obj specsim setup specsim_setup))
 	scripts/fuzz.sh $(BUILD)-fuzz $(FUZZ_TIME)
+
+# ---- Reference designs on boards (issue 15, docs/boards.md) ----------------------------------------------------
+#   make board-sim BOARD=icebreaker|ulx3s [MODE=640x480|1280x720] [FRAMES=2]
+#                     the board's Verilated top for whole frames: PNGs, model and double-precision comparison,
+#                     video timing (build/board-sim/)
+#   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
+#   make flash BOARD=icebreaker|ulx3s [MODE=...] [DEVICE=25k]   program the board (iceprog / openFPGALoader)
+#   make board-split    the error against split points per chord (docs/data/board_split_*.json)
+#   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
+#   make lint-boards    verilator --lint-only -Wall on the board RTL
+BOARD ?=
+MODE ?= 640x480
+FRAMES ?= 2
+DEVICE ?= 25k
+BOARD_RTL := $(shell grep -v '^\#' boards/common/board_common.f)
+CORE_RTL := $(RTL_CORE) $(RTL_SHADER)
+
+.PHONY: board-sim board-split bitstream flash board-tables lint-boards check-board
+
+check-board:
+	@case "$(BOARD)" in icebreaker|ulx3s) ;; *) echo "make: BOARD=icebreaker or BOARD=ulx3s"; exit 2;; esac
+
+board-sim: check-board build
+	$(call cmake_build,$(BUILD),--target boardsim)
+	@mkdir -p $(BUILD)/board-sim docs/data docs/img
+	$(BUILD)/boardsim run --board $(BOARD) --mode $(MODE) --frames $(FRAMES) --out-dir $(BUILD)/board-sim
+	cp $(BUILD)/board-sim/$(BOARD)_$(MODE)_summary.json docs/data/board_sim_$(BOARD)_$(MODE).json
+	cp $(BUILD)/board-sim/$(BOARD)_$(MODE)_frame0.png docs/img/board_$(BOARD)_$(MODE).png
+
+# The split study (docs/boards.md): error against the split points per chord, for both boards' scenes
+board-split: build
+	@mkdir -p docs/data
+	$(BUILD)/boardsim-quick split --mode 640x480 --shader rtl --k 1,4,8,16,32 --json docs/data/board_split_640x480.json
+	$(BUILD)/boardsim-quick split --mode 320x240 --shader rtl --k 1,4,8,16 --json docs/data/board_split_320x240.json
+
+bitstream: check-board build deps-synth
+	@mkdir -p docs/data
+	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom $(if $(filter icebreaker,$(BOARD)),--breakdown); rc=$$?; \
+	  if [ -f $(BUILD)/board/$(BOARD)/summary.json ]; then \
+	    cp $(BUILD)/board/$(BOARD)/summary.json docs/data/bitstream_$(BOARD).json; fi; exit $$rc
+
+# The programmer for each board (Debian: fpga-icestorm's iceprog, openfpgaloader); not run by any test
+flash: check-board
+	@if [ "$(BOARD)" = icebreaker ]; then f=$(BUILD)/board/icebreaker/icebreaker_640x480_up5k.bin; \
+	    cmd="iceprog $$f"; else f=$(BUILD)/board/ulx3s/ulx3s_$(MODE)_$(DEVICE).bit; cmd="openFPGALoader -b ulx3s $$f"; fi; \
+	  if [ ! -f "$$f" ]; then echo "make flash: $$f not found: run 'make bitstream BOARD=$(BOARD)' first"; exit 2; fi; \
+	  echo "$$cmd"; $$cmd
+
+board-tables: build
+	$(BUILD)/boardsim-quick gen --out-dir boards/common/gen
+
+lint-boards: deps
+	@for top in $(basename $(notdir $(BOARD_RTL))); do \
+	    verilator --lint-only -Wall -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) --top-module $$top \
+	        || exit 1; echo "  $$top: clean"; \
+	done
+	@for b in icebreaker ulx3s; do \
+	    verilator --lint-only -Wall --timing -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) \
+	        $$(grep -v '^#' boards/$$b/$$b.f) boards/$$b/sim/*.v --top-module $${b}_top || exit 1; \
+	    echo "  $${b}_top (with the primitives' simulation models): clean"; \
+	done

@@ -16,7 +16,8 @@ Exit code 0 only when every proof and every cover passed; a failing proof leaves
 usage: formal.py [--specrom PATH] [--work DIR] [--jobs NAME,...] [--yosys yosys] [--smtbmc yosys-smtbmc]
                  [--mutants] [--data FILE.json]
 --data: also write the results (every step, its time, the covers reached; or every mutant) as JSON, which
-`make formal` / `make formal-mutants` put into docs/data/ for docs/verification.md (scripts/docgen.py).
+`make formal` / `make formal-mutants` put into docs/data/ for docs/verification.md (scripts/docgen.py). A proof
+run replaces the rows of the jobs it ran and keeps the other jobs' rows (each row has its date).
 """
 import json
 import argparse
@@ -334,9 +335,22 @@ def main():
         del t0
     print("formal: %s" % ("all proofs and covers passed" if failed == 0 else "%d step(s) failed" % failed))
     if failed == 0:
-        write_data(a.data, {"steps": rows, "widths": WIDTHS,
-                            "jobs": {k: {"bmc": JOBS[k]["bmc"], "depth": JOBS[k]["depth"], "cover": JOBS[k]["cover"]}
-                                     for k in jobs}})
+        # the jobs run now replace their rows; the other jobs' rows (an earlier run's, with its date) stay
+        today = time.strftime("%Y-%m-%d")
+        for r in rows:
+            r["date"] = today
+        old = {}
+        if a.data and os.path.exists(a.data):
+            try:
+                old = json.load(open(a.data))
+            except ValueError:
+                old = {}
+        keep = [dict(r, date=r.get("date", old.get("date"))) for r in old.get("steps", []) if r["job"] not in jobs]
+        order = {k: i for i, k in enumerate(JOBS)}
+        steps = sorted(keep + rows, key=lambda r: order.get(r["job"], len(order)))
+        job_info = {k: v for k, v in old.get("jobs", {}).items() if k not in jobs}
+        job_info.update({k: {"bmc": JOBS[k]["bmc"], "depth": JOBS[k]["depth"], "cover": JOBS[k]["cover"]} for k in jobs})
+        write_data(a.data, {"steps": steps, "widths": WIDTHS, "jobs": job_info})
     return 0 if failed == 0 else 1
 
 

@@ -20,9 +20,10 @@ module spec_datapath #(
     parameter DELTA_W = 10,
     parameter TSEL_W = 2,
     parameter PIPE = 0,    // 1: a register stage after each DSP block's output (spec_stream; 2 more clocks,
-                           //    3 with INTERP = 1)
+                           //    4 with INTERP = 1: also a second register on ROM 12's word)
     parameter CTRL = 1,    // 0: no valid/last pipeline (out_valid, out_last, busy = 0; the output register
                            //    loads with every ce): the caller tracks its pixels (spec_stream)
+    parameter DELAY_RAM = 0,   // 1: C's delay beside multiplier 11 and ROM 12 in block RAM (spec_delay RAM)
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,
@@ -44,7 +45,10 @@ module spec_datapath #(
     localparam FRAC_W = (INTERP != 0) ? INTERP_FRAC : 1;
     localparam P = (PIPE != 0) ? 1 : 0;
     localparam M11 = 7 + P;                       // multiplier 11's stages
-    localparam VS = M11 + 2 + ((INTERP != 0) ? 2 + P : 0);   // the stage where the table value is ready
+    // registers on ROM 12's word after the block RAM: two with INTERP = 1 and PIPE = 1, so that the block
+    // RAM's output register and the interpolator's DSP input register each have one of their own
+    localparam WR = ((INTERP != 0) && (PIPE != 0)) ? 2 : 1;
+    localparam VS = M11 + 1 + WR + ((INTERP != 0) ? 2 + P : 0);   // the stage where the table value is ready
     localparam LAT = VS + 3 + P;                  // multiplier 13's stages
 
     // valid flags of every stage (stage s holds what entered s clocks of `ce` ago)
@@ -90,14 +94,15 @@ module spec_datapath #(
     ) u_rom12 (
         .clk(clk), .en(ce), .table_sel(tsel_rom), .index(index11), .value(word12)
     );
-    // a plain register after the block RAM (stage 9): its clock-to-output time is long (5.6 ns on ECP5, where
-    // syn/ecp5_pack.py moves this register into the block RAM's own output register). The table value and the
-    // interpolation step get registers of their own, so that the step's feeds only the interpolator's DSP
-    // block (which then takes it as its input register).
+    // a plain register after the block RAM (stage 9): the block RAM's clock-to-output time is long (5.6 ns on
+    // the ECP5 without its output register), so nothing but a register comes after it; syn/dsp_pack.py moves
+    // it into the DP16KD's output register (REGMODE OUTREG). With INTERP = 1 and PIPE = 1 a second register
+    // (stage 10) feeds the interpolator's DSP block alone, which takes it as its input register. The table
+    // value and the interpolation step get registers of their own.
     wire [TBL_DW-1:0] word_v;
-    spec_delay #(.W(TBL_DW), .N(1)) u_word (.clk(clk), .ce(ce), .d(word12[TBL_DW-1:0]), .q(word_v));
+    spec_delay #(.W(TBL_DW), .N(WR)) u_word (.clk(clk), .ce(ce), .d(word12[TBL_DW-1:0]), .q(word_v));
     wire [FRAC_W-1:0] frac_interp;   // the position's fraction, delayed to meet the table word
-    spec_delay #(.W(FRAC_W), .N(2)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac_interp));
+    spec_delay #(.W(FRAC_W), .N(1 + WR)) u_frac (.clk(clk), .ce(ce), .d(frac11), .q(frac_interp));
     wire zero_m;
     spec_delay #(.W(1), .N(VS - M11)) u_zero (.clk(clk), .ce(ce), .d(zero11), .q(zero_m));
 
@@ -106,7 +111,7 @@ module spec_datapath #(
     generate
         if (INTERP != 0) begin : g_interp
             wire [DELTA_W-1:0] word_d;
-            spec_delay #(.W(DELTA_W), .N(1)) u_word_d (.clk(clk), .ce(ce), .d(word12[WORD_W-1:TBL_DW]), .q(word_d));
+            spec_delay #(.W(DELTA_W), .N(WR)) u_word_d (.clk(clk), .ce(ce), .d(word12[WORD_W-1:TBL_DW]), .q(word_d));
             spec_interp #(.TBL_DW(TBL_DW), .DELTA_W(DELTA_W), .INTERP_FRAC(INTERP_FRAC), .DSP_FF(P)) u_interp (
                 .clk(clk), .ce(ce), .v(word_v), .delta(word_d), .frac(frac_interp), .value(value_m)
             );
@@ -119,7 +124,7 @@ module spec_datapath #(
 
     // multiplier 13 (three stages) -> output 27
     wire [C_W-1:0] c_m;
-    spec_delay #(.W(C_W), .N(VS)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
+    spec_delay #(.W(C_W), .N(VS), .RAM(DELAY_RAM)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
     spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W), .DSP_FF(P)) u_mul13 (
         .clk(clk), .rst(rst), .ce(ce), .en(out_en), .c(c_m), .value(value_m), .zero(zero_m),
         .out(out)

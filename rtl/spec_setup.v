@@ -15,8 +15,8 @@
 // ITERATIVE = 0: the arithmetic fully pipelined (spec_setup_pipe): a new span every clock, its descriptor
 //   LAT clocks later, in order, into a FIFO of 2^FIFO_AW + 2 places; s_axis_tready (a register) gives as many
 //   credits, so the pipeline never stops and nothing is lost when the sink stalls.
-// ITERATIVE = 1: one span at a time through shared units (spec_setup_engine); s_axis_tready is 1 while it
-//   is idle. For the iCE40 UP5K.
+// ITERATIVE = 1: one span at a time through shared units (spec_setup_engine, spec_setup_backend);
+//   s_axis_tready is 1 while it is idle (the previous descriptor handed over). For the iCE40 UP5K.
 // Both give the same descriptors and flags bit for bit. m_axis_tvalid, m_axis_tdata and m_axis_tuser are
 // registers and hold until m_axis_tready. Reset: rst_n synchronous, active low; spans in flight are dropped,
 // s_axis_tready is 0 in the cycle after a reset edge.

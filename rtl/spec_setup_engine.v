@@ -1,16 +1,18 @@
 // spec_setup_engine - spec_setup's arithmetic one span at a time through shared units, for small FPGAs
-// (the iCE40 UP5K): one CORDIC lane (two coordinates, the angle lane, the gain adder for the third
-// coordinate), a vector memory (block RAM), one log2 / exp2 table each read twice per lookup, a multiplier
-// for the interpolations, a serial divider. The same integer operations as spec_setup_pipe in the same order,
-// so the same descriptors and flags bit for bit (SetupModel::run).
+// (the iCE40 UP5K; docs/setup.md): the vectors in a memory (block RAM), one CORDIC lane (two coordinates,
+// the angle lane, the gain adder for the third coordinate) for the passes and the angles, then
+// spec_setup_backend (one adder driven by a micro-program) for everything after the angles. The same integer
+// operations as spec_setup_pipe in the same order, so the same descriptors and flags bit for bit
+// (SetupModel::run).
 //
 // A pass with k lanes is k runs of the lane: the driving vector first (its micro-rotation directions are
 // recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector
 // (3 clocks, + 1 for the memory), ITERS micro-rotations with the gain terms of t added beside them, write
-// a, b, t back (3 clocks). The runs (P1..Q1, the angles) are the table `run_*` below.
+// a, b, t back (3 clocks; not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below.
+// The back end starts when gamma is in the angle lane and takes lambda when the last run is done.
 //
 // Handshake: s_tready is 1 while idle (a register); m_tvalid and the output fields are registers and hold until
-// m_tready; a finished span waits for the output register to be free. rst: back to idle, output empty.
+// m_tready; the next span is taken once the descriptor has been handed over. rst: back to idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -45,16 +47,15 @@ module spec_setup_engine #(
     input  wire [N_W-1:0]      s_n,
     input  wire [L_W-1:0]      s_l,
     input  wire                s_rule,
-    output reg                 m_tvalid,
+    output wire                m_tvalid,
     input  wire                m_tready,
-    output reg  [C_W-1:0]      m_c,
-    output reg  [N_W-1:0]      m_n,
-    output reg  [L_W-1:0]      m_l,
-    output reg  [ANG_W-1:0]    m_zeta0,
-    output reg  [ANG_W-1:0]    m_dzeta,
-    output reg  [6:0]          m_flags
+    output wire [C_W-1:0]      m_c,
+    output wire [N_W-1:0]      m_n,
+    output wire [L_W-1:0]      m_l,
+    output wire [ANG_W-1:0]    m_zeta0,
+    output wire [ANG_W-1:0]    m_dzeta,
+    output wire [6:0]          m_flags
 );
-    localparam S = ZF - ANG_FRAC;
     localparam NRUN = 24;
     localparam [ITERS*ZW-1:0] ATAN = `SETUP_ATAN;
     localparam [8*`SETUP_GAIN_N-1:0] GSH = `SETUP_GAIN_SHIFT;
@@ -62,11 +63,8 @@ module spec_setup_engine #(
     localparam [8*`SETUP_HALF_N-1:0] HSH = `SETUP_HALF_SHIFT;
     localparam [`SETUP_HALF_N-1:0] HNEG = `SETUP_HALF_NEG;
     localparam signed [ZW-1:0] HALF_PI = `SETUP_HALF_PI;
-    localparam signed [ZW-1:0] PI_Z = `SETUP_PI;
-    localparam signed [ZW-1:0] TWO_PI = `SETUP_TWO_PI;
-    localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
     localparam [W-1:0] U = `SETUP_N1_START;
-    localparam [W-1:0] TAU = `SETUP_OPP_TAU;
+    localparam signed [W-1:0] TAU = `SETUP_OPP_TAU;
 
     // ---- the runs: vector, plane (0: a = x, b = y, t = z; 1: a = z, b = x, t = y), role, halving -----------
     // vectors: 0 N1, 1 N2, 2 H1, 3 H2, 4 P (perpendicular(N1)), 5 N1 of the H1 frame ("M1")
@@ -103,15 +101,18 @@ module spec_setup_engine #(
     wire [1:0] run_role;
     assign {run_vec, run_plane, run_role, run_halve} = RUNS[run*7 +: 7];
 
+    localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
+    reg [2:0] st;
+    reg [4:0] it;                         // micro-rotation
+
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
     reg [W-1:0] vmem[0:31];
     reg [4:0] v_ra, v_wa;
     reg v_we;
     reg [W-1:0] v_wd, v_rd;
-    always @(posedge clk) begin
-        if (v_we) vmem[v_wa] <= v_wd;
-        v_rd <= vmem[v_ra];
-    end
+    // write and read in separate processes: no read-during-write relation (never used), so no bypass logic
+    always @(posedge clk) if (v_we) vmem[v_wa] <= v_wd;
+    always @(posedge clk) v_rd <= vmem[v_ra];
     // the coordinates of a, b, t for the current run
     wire [1:0] ca = run_plane ? 2'd2 : 2'd0;
     wire [1:0] cb = run_plane ? 2'd0 : 2'd1;
@@ -123,52 +124,43 @@ module spec_setup_engine #(
     reg [N_W-1:0] n_reg;
     reg [L_W-1:0] l_reg;
     reg rule_reg, bad, exact_opp, opp;
-    reg signed [ZW-1:0] gam, lam;
-    reg [W-1:0] mag, c1;
 
     // the vectors into the vector memory, one component a clock: the input vectors are shifted out of vec_in,
     // every component shifted left by its vector's common amount (SetupModel::prescale) in one shifter; then
     // P = perpendicular(N1) from N1's codes (N1 x e_k, e_k the axis of its smallest component) and M1 = (0, 0, U)
     reg [2:0] ld_v;                       // 0..3: N1, N2, H1, H2; 4: P; 5: M1
     reg [1:0] ld_c;                       // 0: the vector's shift; 1..3: its x, y, z
-    reg [5:0] ld_sh, n1_sh;               // the shift of the vector being loaded, N1's
-    reg [3*VEC_W-1:0] n1q;                // N1's codes
+    // the prescale shift F - 1 - lead is F - VEC_W (wiring) plus VEC_W - 1 - lead, SHB bits
+    localparam SHB = (VEC_W <= 16) ? 4 : (VEC_W <= 32) ? 5 : 6;
+    reg [SHB-1:0] ld_sh;                  // the variable part of the shift of the vector being loaded
     wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
     wire [VEC_W-1:0] mx = cx[VEC_W-1] ? -cx : cx, my = cy[VEC_W-1] ? -cy : cy, mz = cz[VEC_W-1] ? -cz : cz;
     wire [VEC_W-1:0] mor = mx | my | mz;   // its leading one is the largest magnitude's
-    localparam [5:0] FM1 = F - 1;
     reg [5:0] lead;
     integer k;
     always @* begin
         lead = 6'd0;
         for (k = 0; k < VEC_W; k = k + 1) if (mor[k]) lead = k[5:0];
     end
-    wire signed [VEC_W-1:0] qx = n1q[0 +: VEC_W], qy = n1q[VEC_W +: VEC_W], qz = n1q[2*VEC_W +: VEC_W];
-    wire [VEC_W-1:0] ax = qx[VEC_W-1] ? -qx : qx, ay = qy[VEC_W-1] ? -qy : qy, az = qz[VEC_W-1] ? -qz : qz;
-    wire [1:0] pk = (ax <= ay && ax <= az) ? 2'd0 : (ay <= az) ? 2'd1 : 2'd2;
-    // P's component c (1 x, 2 y, 3 z): k = x: (0, nz, -ny); k = y: (-nz, 0, nx); k = z: (ny, -nx, 0)
-    reg signed [VEC_W:0] pc;
-    always @* begin
-        case ({pk, ld_c})
-            {2'd0, 2'd2}: pc = {qz[VEC_W-1], qz};
-            {2'd0, 2'd3}: pc = -{qy[VEC_W-1], qy};
-            {2'd1, 2'd1}: pc = -{qz[VEC_W-1], qz};
-            {2'd1, 2'd3}: pc = {qx[VEC_W-1], qx};
-            {2'd2, 2'd1}: pc = {qy[VEC_W-1], qy};
-            {2'd2, 2'd2}: pc = -{qx[VEC_W-1], qx};
-            default: pc = {(VEC_W + 1) {1'b0}};
-        endcase
-    end
-    wire signed [VEC_W:0] ld_val = (ld_v == 3'd4) ? pc : {cx[VEC_W-1], cx};
-    wire signed [W-1:0] ld_ext = {{(W - VEC_W - 1) {ld_val[VEC_W]}}, ld_val};
-    wire signed [W-1:0] ld_word = ld_ext <<< ((ld_v == 3'd4) ? n1_sh : ld_sh);
+    wire signed [W-1:0] ld_ext = {{(W - VEC_W) {cx[VEC_W-1]}}, cx};
+    wire signed [W-1:0] ld_word = (ld_ext <<< (F - VEC_W)) <<< ld_sh;
+    // P = N1 x e_k (e_k the axis of N1's smallest component, the first of equals): k = x: (0, nz, -ny);
+    // k = y: (-nz, 0, nx); k = z: (ny, -nx, 0), from N1's prescaled words (the same shift): component c is 0
+    // for c = k, else the remaining axis 3 - k - c of N1, negated for c = k + 2 (mod 3)
+    reg [1:0] pk;
+    wire [1:0] p_c = ph[1:0] - 2'd2;      // the component written at phase ph (2..4)
+    wire [1:0] p_src = 2'd3 - pk - ph[1:0];   // the axis read at phase ph (0..2)
+    wire p_neg = p_c == ((pk == 2'd0) ? 2'd2 : pk - 2'd1);
+    wire signed [W-1:0] v_neg = -$signed(v_rd);
+    localparam [5:0] VM1 = VEC_W - 1;
+    wire [5:0] sh_var = VM1 - lead;       // 0 .. VEC_W - 1
+    wire unused_sh = &{1'b0, sh_var};
 
     // ---- the CORDIC lane -------------------------------------------------------------------------------------
     reg signed [W-1:0] la, lb, acc;       // the pair, the third coordinate's gain sum
     reg signed [ZW-1:0] lz;
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
-    reg [4:0] it;                         // micro-rotation
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
     wire signed [W-1:0] as = la >>> it;
     wire signed [W-1:0] bs = lb >>> it;
@@ -208,84 +200,25 @@ module spec_setup_engine #(
     wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
     wire [ZW-1:0] atan_i = atab[it];
 
-    // ---- table lookups with interpolation: log2 (TB + RB bits of position) and exp2 -----------------------------
-    reg [TB-1:0] tab_a;
-    wire [LF-1:0] lg_w;
-    wire [EF:0] ex_w;
-    spec_rom #(.AW(TB), .DW(LF), .INIT_FILE(LOG2_FILE)) u_log2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(lg_w));
-    spec_rom #(.AW(TB), .DW(EF + 1), .INIT_FILE(EXP2_FILE)) u_exp2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(ex_w));
-    reg [EF:0] w0;                        // the first word of a lookup
-    reg [RB-1:0] tr;                      // position between the words
-    reg [EF:0] tdiff;
-    wire [EF+RB:0] tprod = tdiff * tr;    // the interpolation product (a DSP)
-    localparam [EF+RB:0] HALF_R = 1 << (RB - 1);
-    wire [EF+RB:0] tprod_r = tprod + HALF_R;
-    wire unused_tprod;
-    assign unused_tprod = &{1'b0, tprod_r[RB-1:0]};
-
-    // log2 operand: leading one and the bits below it
-    // the operand is normalized by shifting it left one bit a clock until its leading one is at the top (lg_e
-    // counts down from its position F + 1); then the TB + RB bits below it are the table index and position
-    reg [F+1:0] lgx;
-    reg [5:0] lg_e;
-    wire [TB-1:0] lg_j = lgx[F -: TB];
-    wire [RB-1:0] lg_r = lgx[F-TB -: RB];
-    wire unused_lgx;
-    assign unused_lgx = &{1'b0, lgx[F-TB-RB:0]};
-
-    // ---- back end registers ------------------------------------------------------------------------------------
-    reg flat, nohl, xpos, sat;
-    reg [LF+5:0] lx, ls;                  // log2 of A's operand, log2 of the strength
-    reg [LF+N_W+5:0] nla, la_sh;          // n * la_v (shift and add: la_v doubled a clock)
-    localparam PW = LF + N_W + 8;
-    reg signed [PW-1:0] pv;
-    reg signed [ZW-1:0] z0;
-    reg [ANG_W-1:0] zeta0, dzeta;
-    reg [C_W-1:0] ccode;
-    // divider
-    localparam DW = L_W + S;
-    reg [DW-1:0] drem, dden;
-    reg [ZW-1:0] dnq;                     // numerator bits left above the quotient bits made
-    reg [5:0] dcnt;
-    wire [DW:0] dsh = {drem, dnq[ZW-1]};
-    wire dge = dsh >= {1'b0, dden};
-    wire [DW:0] ddif = dsh - {1'b0, dden};
-    wire unused_ddif = ddif[DW];
-    wire [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
-
     // ---- control ----------------------------------------------------------------------------------------------------
-    localparam ST_IDLE = 5'd0, ST_LOAD = 5'd1, ST_RD = 5'd2, ST_ROT = 5'd3, ST_WR = 5'd4, ST_BE = 5'd5,
-               ST_LG = 5'd6, ST_EX = 5'd7;
-    reg [4:0] st;
     reg [3:0] ph;                         // phase within a state
-    reg [5:0] bs_step;                    // back end step
-
-    wire signed [ZW-1:0] mid = z0 + (gam >>> 1);
-    wire signed [ZW-1:0] z0r = (z0 + (1 <<< (S - 1))) >>> S;
-    wire [ZW-1:0] gnum = {1'b0, gam[ZW-2:0]} + ({{(ZW - L_W) {1'b0}}, l_reg} << (S - 1));
-    localparam [LF+6:0] OFF = F << LF;
-    localparam [LF+6:0] OFF_FLAT = (F << LF) - `SETUP_LOG2_GAIN;
-    localparam [LF+6:0] LA_MAX = 31 << LF;
-    wire signed [LF+7:0] la_raw = $signed({1'b0, flat ? OFF_FLAT : OFF}) - $signed({2'b00, lx});
-    wire signed [LF+7:0] lis = $signed({2'b00, ls}) - $signed(STR_FRAC << LF);
-    wire [PW-LF-1:0] p_i = pv[PW-1:LF];
-    wire [5:0] p_sh1 = EF - C_W - 1 + {1'b0, p_i[4:0]};
-    wire [W-1:0] p_inc = as + 1'b1;
-    wire [W-2:0] p_round = p_inc[W-1:1];
-    wire [5:0] nbit6 = bs_step - 6'd7;   // steps 7..16: bit nbit of n
-    wire [3:0] nbit = nbit6[3:0];
-    wire zero_c = bad || nohl || (s_reg == {STR_W{1'b0}}) || ((n_reg != {N_W{1'b0}}) && !xpos);
-    wire unused_bits;
-    assign unused_bits = &{1'b0, z0r[ZW-1:ANG_W], p_i[PW-LF-1:5], nbit6[5:4], p_sh1[5], p_inc[0]};
+    reg be_start;                         // the back end starts (one clock)
+    wire be_done;
+    wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
+    wire signed [W-1:0] la_neg = -la, lb_neg = -lb;
+    wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
+    // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
+    wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
+    wire lb_small = (lb < TAU) && (lb > -TAU);
+    wire acc_small = (acc < TAU) && (acc > -TAU);
 
     always @(posedge clk) begin
         v_we <= 1'b0;
+        be_start <= 1'b0;
         if (rst) begin
             st <= ST_IDLE;
             s_tready <= 1'b0;
-            m_tvalid <= 1'b0;
         end else begin
-            if (m_tvalid && m_tready) m_tvalid <= 1'b0;
             case (st)
                 ST_IDLE: begin
                     s_tready <= 1'b1;
@@ -299,18 +232,29 @@ module spec_setup_engine #(
                         bad <= 1'b0;
                         ld_v <= 3'd0;
                         ld_c <= 2'd0;
+                        ph <= 4'd0;
                         st <= ST_LOAD;
                     end
                 end
                 // write the prescaled vectors (and P, and M1 = (0, 0, U)) into the vector memory
                 ST_LOAD: begin
-                    if (ld_c == 2'd0) begin
-                        // the vector's shift (input vectors) from its components' leading one
-                        ld_sh <= FM1 - lead;
-                        if (ld_v == 3'd0) begin
-                            n1_sh <= FM1 - lead;
-                            n1q <= vec_in[0 +: 3*VEC_W];
+                    if (ld_v == 3'd4) begin
+                        // P: read N1's words at phases 0..2, write P's at 2..4 (the read takes two clocks)
+                        ph <= ph + 4'd1;
+                        if (ph < 4'd3) v_ra <= {3'd0, p_src};
+                        if (ph >= 4'd2) begin
+                            v_we <= 1'b1;
+                            v_wa <= {3'd4, p_c};
+                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_rd;
                         end
+                        if (ph == 4'd4) begin
+                            ph <= 4'd0;
+                            ld_v <= 3'd5;
+                        end
+                    end else if (ld_c == 2'd0) begin
+                        // the vector's shift (input vectors) from its components' leading one
+                        ld_sh <= sh_var[SHB-1:0];
+                        if (ld_v == 3'd0) pk <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
                         if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
                         ld_c <= 2'd1;
                     end else begin
@@ -325,7 +269,7 @@ module spec_setup_engine #(
                                 run <= 5'd0;
                                 ph <= 4'd0;
                                 st <= bad ? ST_BE : ST_RD;
-                                bs_step <= 6'd0;
+                                be_start <= bad;
                             end
                         end else begin
                             ld_c <= ld_c + 2'd1;
@@ -340,9 +284,9 @@ module spec_setup_engine #(
                         4'd1: v_ra <= {run_vec, cb};
                         4'd2: begin
                             v_ra <= {run_vec, ct};
-                            la <= run_halve ? ($signed(v_rd + 1'b1) >>> 1) : $signed(v_rd);
+                            la <= run_halve ? v_half : $signed(v_rd);
                         end
-                        4'd3: lb <= run_halve ? ($signed(v_rd + 1'b1) >>> 1) : $signed(v_rd);
+                        4'd3: lb <= run_halve ? v_half : $signed(v_rd);
                         default: begin
                             lts <= v_rd;
                             acc <= !tc_first[1] ? {W{1'b0}} : tc_first[0] ? -($signed(v_rd) <<< 1) : ($signed(v_rd) <<< 1);
@@ -352,13 +296,13 @@ module spec_setup_engine #(
                             // followers replay), a quarter turn (angle runs)
                             if (run_role == 2'd2) begin
                                 if (la[W-1]) begin
-                                    la <= lb[W-1] ? -lb : lb;
-                                    lb <= lb[W-1] ? la : -la;
+                                    la <= lb[W-1] ? lb_neg : lb;
+                                    lb <= lb[W-1] ? la : la_neg;
                                     lz <= lb[W-1] ? -HALF_PI : HALF_PI;
                                 end
                             end else if ((run_role == 2'd0) ? la[W-1] : neg) begin
-                                la <= -la;
-                                lb <= -lb;
+                                la <= la_neg;
+                                lb <= lb_neg;
                             end
                             if (run_role == 2'd0) neg <= la[W-1];
                             st <= ST_ROT;
@@ -382,7 +326,7 @@ module spec_setup_engine #(
                 end
                 ST_WR: begin
                     ph <= ph + 4'd1;
-                    v_we <= 1'b1;
+                    v_we <= run_role != 2'd2;   // the angle runs keep their vectors (M1.z stays cos theta1)
                     if (ph == 4'd0 && tc_last[1]) acc <= acc + (lts ^ {W{tc_last[0]}}) + {{(W - 1) {1'b0}}, tc_last[0]};
                     case (ph)
                         4'd0: begin
@@ -412,157 +356,42 @@ module spec_setup_engine #(
                     endcase
                     if (ph == 4'd0) begin
                         // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite?
-                        if (run == 5'd6) exact_opp <= la[W-1] && ((lb[W-1] ? -lb : lb) < TAU) && ((acc[W-1] ? -acc : acc) < TAU);
+                        if (run == 5'd6) exact_opp <= la[W-1] && lb_small && acc_small;
                         // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
-                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && ($signed(rho2k) < -$signed({{10{acc[W-1]}}, acc})));
-                        if (run == 5'd21) c1 <= acc;
-                        if (run == 5'd22) gam <= lz;
-                        if (run == 5'd23) begin
-                            lam <= lz;
-                            mag <= la;
-                        end
+                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
+                        // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
+                        if (run == 5'd22) be_start <= 1'b1;
                     end
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
                         if (run == NRUN - 1) begin
                             st <= ST_BE;
-                            bs_step <= 6'd0;
                         end else begin
                             run <= run + 5'd1;
                             st <= ST_RD;
                         end
                     end
                 end
-                // the back end (SetupModel::run after the angles)
+                // the back end (spec_setup_backend) makes the descriptor; lambda and A stay in lz and la
                 ST_BE: begin
-                    bs_step <= bs_step + 6'd1;
-                    case (bs_step)
-                        6'd0: begin
-                            flat <= (l_reg == {L_W{1'b0}}) || (gam < FLAT_Z);
-                            z0 <= -lam;
-                            // the division starts: numerator gamma + l 2^(S-1), divisor l 2^S
-                            drem <= {DW{1'b0}};
-                            dden <= {l_reg, {S{1'b0}}};
-                            dnq <= gnum;
-                            dcnt <= 6'd0;
-                        end
-                        6'd1: begin
-                            z0 <= (mid > PI_Z) ? z0 - TWO_PI : (mid < -PI_Z) ? z0 + TWO_PI : z0;
-                            lgx <= flat ? c1[F+1:0] : mag[F+1:0];
-                            lg_e <= F + 1;
-                            xpos <= flat ? (!c1[W-1] && c1 != {W{1'b0}}) : (!mag[W-1] && mag != {W{1'b0}});
-                        end
-                        6'd2: begin
-                            nohl <= (n_reg != {N_W{1'b0}}) && (flat ? (c1[W-1] || c1 == {W{1'b0}})
-                                                                   : ((z0 + gam <= -HALF_PI) || (z0 >= HALF_PI)));
-                            zeta0 <= flat ? {ANG_W{1'b0}} : z0r[ANG_W-1:0];
-                            st <= ST_LG;      // log2 of A's operand, then back here at step 3
-                            ph <= 4'd0;
-                        end
-                        6'd3: begin
-                            lx <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
-                            lgx <= {{(F + 2 - STR_W) {1'b0}}, s_reg};
-                            lg_e <= F + 1;
-                        end
-                        6'd4: begin
-                            st <= ST_LG;      // log2 of the strength, then step 5
-                            ph <= 4'd0;
-                        end
-                        6'd5: begin
-                            ls <= {lg_e, {LF{1'b0}}} + {6'd0, w0[LF-1:0]} + {6'd0, tprod_r[LF+RB-1:RB]};
-                        end
-                        6'd6: begin
-                            nla <= {(LF + N_W + 6) {1'b0}};
-                            la_sh <= {{N_W{1'b0}}, (!xpos || la_raw < 0) ? {(LF + 6) {1'b0}}
-                                      : (la_raw > $signed({1'b0, LA_MAX})) ? LA_MAX[LF+5:0] : la_raw[LF+5:0]};
-                        end
-                        6'd7, 6'd8, 6'd9, 6'd10, 6'd11, 6'd12, 6'd13, 6'd14, 6'd15, 6'd16: begin
-                            // n * la_v, one bit of n a clock (below)
-                        end
-                        6'd17: begin
-                            pv <= $signed({2'b00, nla}) - $signed({{(PW - LF - 8) {lis[LF+7]}}, lis});
-                        end
-                        6'd18: begin
-                            sat <= pv <= 0;
-                            st <= ST_EX;      // exp2 of the fraction of p, then step 19
-                            ph <= 4'd0;
-                        end
-                        6'd19: begin
-                            ccode <= (p_i > C_W + 1) ? {C_W{1'b0}}
-                                   : (p_round > {{(W - 1 - C_W) {1'b0}}, {C_W{1'b1}}}) ? {C_W{1'b1}} : p_round[C_W-1:0];
-                        end
-                        default: begin       // 20: wait for the divider and the output register (and stay)
-                            if (dcnt == ZW[5:0] && !(m_tvalid && !m_tready)) begin
-                                m_tvalid <= 1'b1;
-                                m_dzeta <= bad || flat ? {ANG_W{1'b0}} : dzeta;
-                                m_zeta0 <= bad ? {ANG_W{1'b0}} : zeta0;
-                                m_l <= l_reg;
-                                m_n <= n_reg;
-                                m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
-                                m_flags <= bad ? {1'b1, 2'b00, l_reg == {L_W{1'b0}}, 3'b000}
-                                               : {1'b0, rule_reg, nohl, l_reg == {L_W{1'b0}}, !zero_c && sat, opp, flat};
-                                st <= ST_IDLE;
-                            end else begin
-                                bs_step <= bs_step;
-                            end
-                        end
-                    endcase
-                    if (bs_step >= 6'd7 && bs_step <= 6'd16) begin
-                        if (n_reg[nbit]) nla <= nla + la_sh;
-                        la_sh <= {la_sh[LF+N_W+4:0], 1'b0};
-                    end
-                    // the divider runs beside the back end from step 1 on
-                    if (bs_step != 6'd0 && dcnt != ZW[5:0]) begin
-                        drem <= dge ? ddif[DW-1:0] : dsh[DW-1:0];
-                        dnq <= {dnq[ZW-2:0], dge};
-                        dcnt <= dcnt + 6'd1;
-                        if (dcnt == ZW[5:0] - 6'd1) dzeta <= {dnq[ANG_W-2:0], dge};
-                    end
+                    v_ra <= {3'd5, 2'd2};       // M1.z after Q1 for the back end: cos(theta1) * 2^F / G
+                    if (be_done) st <= ST_IDLE;
                 end
-                // a log2 lookup of lgx: normalize, read words j and j + 1, interpolate (back to ST_BE)
-                ST_LG: begin
-                    ph <= ph + 4'd1;
-                    case (ph)
-                        4'd0: begin
-                            if (!lgx[F+1] && lg_e != 6'd0) begin
-                                lgx <= {lgx[F:0], 1'b0};
-                                lg_e <= lg_e - 6'd1;
-                                ph <= ph;
-                            end
-                        end
-                        4'd1: tab_a <= lg_j;
-                        4'd2: tab_a <= lg_j + 1'b1;
-                        4'd3: begin
-                            w0 <= {{(EF + 1 - LF) {1'b0}}, lg_w};
-                            tr <= lg_r;
-                        end
-                        4'd4: tdiff <= ((&lg_j) ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w}) - w0;
-                        default: st <= ST_BE;   // tprod is ready
-                    endcase
-                end
-                // an exp2 lookup of p's fraction (back to ST_BE)
-                ST_EX: begin
-                    ph <= ph + 4'd1;
-                    case (ph)
-                        4'd0: tab_a <= pv[LF-1 -: TB];
-                        4'd1: tab_a <= pv[LF-1 -: TB] + 1'b1;
-                        4'd2: begin
-                            w0 <= ex_w;
-                            tr <= pv[LF-TB-1 -: RB];
-                        end
-                        4'd3: tdiff <= w0 - ((&pv[LF-1 -: TB]) ? (1 << (EF - 1)) : ex_w);
-                        4'd4: begin
-                            // 2^-f in la, and the rounding shift (EF - C_W + i, at most EF + 1 when the code is
-                            // not 0) less one in it: code = ((la >>> it) + 1) >> 1, with the lane's shifter
-                            la <= {{(W - EF - 1) {1'b0}}, w0 - tprod_r[EF+RB:RB]};
-                            it <= p_sh1[4:0];
-                        end
-                        default: st <= ST_BE;
-                    endcase
-                end
-                default: st <= ST_IDLE;
+                // verilator coverage_off
+                default: st <= ST_IDLE;   // st has six values; the other two are never reached
+                // verilator coverage_on
             endcase
         end
     end
+
+    spec_setup_backend #(
+        .F(F), .W(W), .ZW(ZW), .ZF(ZF), .LF(LF), .EF(EF), .TB(TB), .RB(RB), .STR_W(STR_W), .STR_FRAC(STR_FRAC),
+        .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+    ) u_back (
+        .clk(clk), .rst(rst), .start(be_start), .lam_ok(st == ST_BE), .done(be_done), .lz(lz), .mag(la), .c1(v_rd),
+        .s_str(s_reg), .s_n(n_reg), .s_l(l_reg), .s_rule(rule_reg), .s_bad(bad), .s_opp(opp),
+        .m_tvalid(m_tvalid), .m_tready(m_tready), .m_c(m_c), .m_n(m_n), .m_l(m_l), .m_zeta0(m_zeta0),
+        .m_dzeta(m_dzeta), .m_flags(m_flags)
+    );
 endmodule
 `default_nettype wire

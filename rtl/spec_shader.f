@@ -7,6 +7,7 @@ spec_setup_exp2.v
 spec_setup_div.v
 spec_setup_pipe.v
 spec_setup_fifo.v
+spec_setup_backend.v
 spec_setup_engine.v
 spec_setup.v
 spec_shader.v

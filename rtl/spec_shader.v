@@ -21,6 +21,7 @@ module spec_shader #(
     parameter ITERATIVE = 0,
     parameter FIFO_AW = 9,                      // spec_setup's descriptor FIFO (pipelined setup)
     parameter FLAGS_AW = (ITERATIVE != 0) ? 2 : 5,   // flags of up to 2^FLAGS_AW - 1 spans between setup and pixels
+    parameter DELAY_RAM = 0,                    // 1: spec_stream's side-band delays in block RAM (UP5K: fewer cells)
     parameter LOG2_FILE = `SETUP_LOG2_FILE,
     parameter EXP2_FILE = `SETUP_EXP2_FILE,
     // spec_stream's configuration (docs/stream.md)
@@ -98,7 +99,8 @@ module spec_shader #(
     wire unused_keep;   // one lane (LANES = 1): tkeep is always 1
     spec_stream #(
         .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+        .DELAY_RAM(DELAY_RAM)
     ) u_stream (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(to_stream), .s_axis_tready(s_ready), .s_axis_tdata(d_data),
         .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata),

@@ -295,9 +295,17 @@ module spec_spangen #(
     end
 
     // the registers' next values (with ce), for the registered enables
-    wire r_v_d = ce ? (r_cont | (take & b_cont)) : r_v;
+    wire r_v_d;
     wire room_d;
     generate
+        if (PACK == 0) begin : g_rv_nopack
+            // = ce ? (r_cont | (take & b_cont)) : r_v, written with what PACK = 0 implies (a take needs ce and
+            // ~r_v; r_ntk needs r_v; b_cont = ~prep_lq0 as nb_carry = 0), so that the registered enables'
+            // next-state logic is two LUT levels: ce_next, prep_v_d, r_v & (~ce | r_cont), take & ~prep_lq0
+            assign r_v_d = (r_v & (~ce | r_cont)) | (take & ~prep_lq0);
+        end else begin : g_rv_pack
+            assign r_v_d = ce ? (r_cont | (take & b_cont)) : r_v;
+        end
         if (PACK != 0 && LANES > 1) begin : g_room_pack
             wire r_ntk_d = ce ? (take ? b_cont2 : r_cont) : r_ntk;
             wire r_last1_bc_d = ce ? (~take & bc_reached) : r_last1_bc;
@@ -326,7 +334,8 @@ module spec_spangen #(
     reg past_rst = 1'b1;
     always @(posedge clk) past_rst <= rst;
     always @(posedge clk) begin
-        if (!rst && !past_rst && (tk != (ce & room & prep_v) || pl != (~prep_v | tk) || pl_n == pl)) begin
+        if (!rst && !past_rst && (tk != (ce & room & prep_v) || pl != (~prep_v | tk) || pl_n == pl ||
+                                  r_v_d != (ce ? (r_cont | (take & b_cont)) : r_v))) begin
             $display("spec_spangen: a registered enable differs from its definition (%m): an RTL bug");
             $fatal(1);
         end

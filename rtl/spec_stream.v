@@ -26,7 +26,7 @@
 // boundaries: the next descriptors wait in a three-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first beat in cycle
 // a + 4 + ACC + LAT = a + `SPEC_STREAM_LATENCY: buffer and span generator (spec_spangen, 3), accumulator
-// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 17 with INTERP = 1), output
+// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 18 with INTERP = 1), output
 // register. Backpressure: every pipeline stage advances only when the output register's skid buffer is
 // empty (a register: no combinational path from m_axis_tready); m_axis_tvalid, m_axis_tdata, m_axis_tkeep and
 // m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too: 1 while the descriptor
@@ -36,6 +36,10 @@
 // the next cycle and no pixel of a span in progress appears later; s_axis_tready is 0 in the cycle after a
 // reset edge and 1 from the one after.
 // A descriptor handed over in a cycle with rst_n = 0 is dropped.
+// DELAY_RAM = 1: C, ROM 9's scale and the table wait beside the accumulator, and C beside the datapath, in
+// memories (block RAM) instead of flip-flops (spec_delay RAM): the same pixels in the same cycles, about
+// (C_W + SCALE_W + TSEL_W) * ACC + C_W * 13 flip-flops fewer per lane for 4 iCE40 block RAMs (1 on the ECP5).
+// For the UP5K when the setup shares it (spec_shader's small configuration).
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
@@ -64,7 +68,8 @@ module spec_stream #(
     parameter DESC_ZETA0_LSB = `SPEC_DESC_ZETA0_LSB,
     parameter DESC_DZETA_LSB = `SPEC_DESC_DZETA_LSB,
     parameter LANES = 1,                        // pixels per beat: 1, 2 or 4
-    parameter PACK = 0                          // 1: a beat may end one span and start the next (LANES > 1)
+    parameter PACK = 0,                         // 1: a beat may end one span and start the next (LANES > 1)
+    parameter DELAY_RAM = 0                     // 1: the long side-band delays in block RAM (fewer flip-flops)
 ) (
     input  wire              clk,
     input  wire              rst_n,
@@ -136,7 +141,7 @@ module spec_stream #(
     // ---- the slots' flags (valid, last), from the beat to the output: NC stages of ce ------------------------
     localparam SEG = 12;
     localparam ACC = (ANG_W + L_W + SEG - 1) / SEG + 4;            // spec_saccum's stages
-    localparam LAT = 14 + ((INTERP != 0) ? 3 : 0);                  // spec_datapath's stages (PIPE = 1)
+    localparam LAT = 14 + ((INTERP != 0) ? 4 : 0);                  // spec_datapath's stages (PIPE = 1)
     localparam NC = ACC + LAT;
     reg [NC*LANES-1:0] ctl_v, ctl_l;    // stage k (1 .. NC) of slot j at [(k-1)*LANES + j]
     always @(posedge clk) begin
@@ -164,7 +169,7 @@ module spec_stream #(
             wire [C_W-1:0] c8;
             wire [SCALE_W-1:0] scale8;
             wire [TSEL_W-1:0] tsel8;
-            spec_delay #(.W(C_W + SCALE_W + TSEL_W), .N(ACC)) u_side8 (
+            spec_delay #(.W(C_W + SCALE_W + TSEL_W), .N(ACC), .RAM(DELAY_RAM)) u_side8 (
                 .clk(clk), .ce(ce),
                 .d({b_c[j*C_W +: C_W], b_scale[j*SCALE_W +: SCALE_W], b_tsel[j*TSEL_W +: TSEL_W]}),
                 .q({c8, scale8, tsel8})
@@ -174,7 +179,7 @@ module spec_stream #(
                 .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
                 .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
                 .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .PIPE(1), .CTRL(0),
-                .ROM12_FILE(ROM12_FILE)
+                .DELAY_RAM(DELAY_RAM), .ROM12_FILE(ROM12_FILE)
             ) u_dp (
                 .clk(clk), .rst(rst), .ce(ce), .in_valid(1'b0), .in_last(1'b0), .angle(angle8),
                 .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out[j*OUT_W +: OUT_W]),

@@ -630,7 +630,9 @@ def block_formal_steps(f, name="formal"):
         what = r["what"] + ((" (%d reached)" % r["covers"]) if r.get("covers") is not None else "")
         out.append("| %s | %s | %s | %.0f |" % (r["job"], what, "pass" if r["pass"] else "FAIL", r["seconds"]))
     out.append("")
-    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (d["date"], d.get("solver")))
+    dates = sorted(set(r.get("date", d["date"]) for r in d["steps"]))
+    out.append("(`make formal` on %s, %s, 2 cores; times vary with the machine's load.)" % (
+        " and ".join(dates), d.get("solver")))
     return "\n".join(out)
 
 
@@ -665,6 +667,63 @@ def block_coverage(f):
     out.append("")
     out.append("(`make coverage` on %s.)" % d["date"])
     return "\n".join(out)
+
+
+# ---- the reference designs on boards (issue 15, docs/boards.md): make board-split, make bitstream -------------
+def block_board_split(f):
+    out = []
+    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (iCEBreaker)")):
+        d = f.data(name)
+        out.append("%s, %d frames:" % (label, d["frames"]))
+        out.append("")
+        out.append("| K | sub-spans a line (mean, most) | n = 1 | n = 3 | n = 10 | n = 100 | n = 1000 | largest | worst PSNR |")
+        out.append("|" + "---|" * 9)
+        for r in d["rows"]:
+            out.append("| %d | %.1f, %d | %s | %d | %.1f dB |" % (r["k"], r["spans_per_line"], r["spans_max_line"],
+                       " | ".join(str(v) for v in r["max_by_sphere"]), r["max"], r["psnr_db"]))
+        out.append("")
+    return "\n".join(out[:-1])
+
+
+def block_board_bitstream(board):
+    def make(f):
+        d = f.data("bitstream_" + board)
+        out = ["| mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |",
+               "|" + "---|" * 10]
+        for r in d["designs"]:
+            for i, c in enumerate(r["clocks"]):
+                lead = ("| %s | %s | %d | %d | %d | %d |" % (r["mode"], r.get("device", ""), r["lut"], r["ff"], r["bram"],
+                                                            r["dsp"]) if i == 0 else "| | | | | | |")
+                out.append("%s %s | %.2f | %.2f | %s |" % (lead, c["net"].replace("$glbnet$", ""), c["constraint_mhz"],
+                                                         c["fmax_mhz"], "yes" if c["met"] else "no"))
+            if not r["clocks"]:
+                out.append("| %s | %s | %d | %d | %d | %d | %s | | | no |" % (r["mode"], r.get("device", ""), r["lut"],
+                                                                             r["ff"], r["bram"], r["dsp"], r.get("note", "")))
+        return "\n".join(out)
+    return make
+
+
+def block_board_breakdown(board):
+    def make(f):
+        d = f.data("bitstream_" + board)
+        out = []
+        for r in d["designs"]:
+            b = r.get("breakdown")
+            if not b or any(o is r for o in out):
+                continue
+            out.append("| block (with its submodules) | LUT | FF | carry | BRAM | DSP |")
+            out.append("|" + "---|" * 6)
+            for name, c in sorted(b.items(), key=lambda kv: -kv[1]["lut"]):
+                label = {"spec_setup": "`spec_setup` (the small engine, its tables)", "spec_shader": "`spec_shader`'s own",
+                         "top": "the top level, `board_core_fb`, PLL, I/O", "sync_fifo": "`sync_fifo` (all)"}.get(
+                             name, "`%s`" % name)
+                out.append("| %s | %d | %d | %d | %d | %d |" % (label, c["lut"], c["ff"], c["carry"], c["bram"], c["dsp"]))
+            tot = {k: sum(c[k] for c in b.values()) for k in ("lut", "ff", "carry", "bram", "dsp")}
+            out.append("| all (hierarchy kept) | %d | %d | %d | %d | %d |" % (tot["lut"], tot["ff"], tot["carry"], tot["bram"],
+                                                                          tot["dsp"]))
+            break
+        return "\n".join(out)
+    return make
 
 
 def block_test_mutants(f):
@@ -765,6 +824,10 @@ BLOCKS.update({
     "bench-render": block_bench_render,
     "host-gamma": block_host_gamma,
     "added-by-tbl-aw": block_added_by_tbl_aw,
+    "board_split": block_board_split,
+    "board_breakdown_icebreaker": block_board_breakdown("icebreaker"),
+    "board_bitstream_ulx3s": block_board_bitstream("ulx3s"),
+    "board_bitstream_icebreaker": block_board_bitstream("icebreaker"),
     "test-long": block_test_long,
     "test-mutants": block_test_mutants,
     "formal-steps": block_formal_steps,

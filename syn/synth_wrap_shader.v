@@ -8,6 +8,7 @@
 `include "spec_params.vh"
 module synth_wrap_shader #(
     parameter ITERATIVE = 0,
+    parameter DELAY_RAM = 0,
     parameter TBL_AW = `SPEC_TBL_AW,
     parameter INTERP = `SPEC_INTERP,
     parameter INTERP_FRAC = `SPEC_INTERP_FRAC,
@@ -40,7 +41,7 @@ module synth_wrap_shader #(
     wire [15:0] m_data;
     wire [6:0] m_user;
     spec_shader #(
-        .ITERATIVE(ITERATIVE), .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
+        .ITERATIVE(ITERATIVE), .DELAY_RAM(DELAY_RAM), .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
         .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
         .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shader (

@@ -28,8 +28,8 @@ MUTANTS = [
     dict(
         name="table-position-halved",
         file="rtl/spec_mul11.v",
-        old="index <= pos_r[TBL_AW:1];",
-        new="index <= {pos_r[TBL_AW:2], 1'b0};",
+        old="index <= pos_r;",
+        new="index <= {pos_r[TBL_AW-1:1], 1'b0};",
         target="spec_tests",
         cmd=["./spec_tests", "--gtest_filter=SpecUnit.WithinDoublePrecisionBoundsForEveryN"],
         marker="fixed-point error grew",
@@ -49,15 +49,15 @@ MUTANTS = [
         why="init_n leaves register 4 (n) as it was; the old reset test (C = 0 gives 0) cannot see it",
     ),
     dict(
-        name="stream-repeats-last-pixel",
-        file="rtl/spec_stream.v",
-        old="else if (ce & cur_done) cur_v <= head_v;",
-        new="else if (ce & cur_done & (head_v | ~cur_v)) cur_v <= head_v;",
+        name="stream-repeats-last-span",
+        file="rtl/spec_spangen.v",
+        old="wire prep_v_d = prep_load ? head_v : prep_v;",
+        new="wire prep_v_d = prep_load ? (head_v | prep_v) : prep_v;",
         target="spec_tests",
         cmd=["./spec_tests", "--gtest_filter=SpecStream.OnePixelPerClockAcrossSpans"],
         marker="an extra pixel",
         passes=[],
-        why="after the last span, with no descriptor waiting, spec_stream sends its last pixel again and again; "
+        why="after the last span, with no descriptor waiting, spec_stream starts that span again and again; "
             "the old driver stopped reading at the expected count and never saw them",
     ),
     dict(

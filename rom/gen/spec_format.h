@@ -101,14 +101,15 @@ struct Format {
     //                     after it: 2, the interpolator: 2 when interp, multiplier 13: 3);
     //   unit_first_pixel: spec_unit, Start in cycle t -> pixel i's valid_o in cycle t + unit_first_pixel + 2i;
     //   stream_datapath_latency: spec_datapath with PIPE = 1 (spec_stream): a register after each DSP block,
-    //                     2 more (3 with interp);
+    //                     2 more (4 with interp: also a second register on ROM 12's word, so that the block
+    //                     RAM's output register and the interpolator's DSP input register have one each);
     //   stream_acc:       spec_stream's pipelined accumulator (spec_saccum): an input stage, one stage per 12-bit
     //                     segment of ang_w + l_w bits, the last sum segment, two clamp stages;
     //   stream_latency:   spec_stream, descriptor accepted in cycle a (core idle) -> first beat in a + this
     //                     (descriptor buffer and span generator 3, accumulator, datapath, output register).
     int datapath_latency() const { return 7 + 2 + (interp ? 2 : 0) + 3; }
     int unit_first_pixel() const { return datapath_latency() + 3; }
-    int stream_datapath_latency() const { return datapath_latency() + 2 + (interp ? 1 : 0); }
+    int stream_datapath_latency() const { return datapath_latency() + 2 + (interp ? 2 : 0); }
     int stream_acc() const { return (ang_w + l_w + 11) / 12 + 4; }
     int stream_latency() const { return 4 + stream_acc() + stream_datapath_latency(); }
 

@@ -1,0 +1,94 @@
+// sync_fifo - a first-in first-out queue in one clock domain, AXI4-Stream on both sides, one item per clock
+// in and out. The storage has a registered read (block RAM on iCE40 / ECP5 for 2^AW x W large enough); a
+// three-entry output queue behind it keeps m_valid / m_data registers and hides the read latency, and the
+// read decision depends on registers only (not on this cycle's m_ready: no combinational path from the
+// sink through the FIFO).
+// Capacity 2^AW + 3. s_ready is a register from the registered count alone: 1 while the storage held at most
+// 2^AW - 2 items in the previous cycle (so a push in this cycle and the next still fit).
+// Reset: rst_n is synchronous, active low: empty; s_ready is 0 in the cycle after reset.
+`timescale 1ns / 1ps
+`default_nettype none
+module sync_fifo #(
+    parameter W = 16,
+    parameter AW = 8,         // storage depth 2^AW
+    parameter LUTRAM = 0      // 1: the storage in distributed RAM (ram_style), where block RAM is short
+) (
+    input  wire         clk,
+    input  wire         rst_n,
+    input  wire         s_valid,
+    output wire         s_ready,
+    input  wire [W-1:0] s_data,
+    output wire         m_valid,
+    input  wire         m_ready,
+    output wire [W-1:0] m_data
+);
+    reg [AW:0] wptr, rptr;               // storage pointers, one extra bit tells full from empty
+    reg [W-1:0] rdata;
+    reg rd_pending;                      // rdata was read at the last edge (valid in this cycle)
+    reg [W-1:0] q0, q1, q2;              // output queue: q0 is the head
+    reg q0_v, q1_v, q2_v;
+    reg ready_q;
+    reg [AW:0] cnt;                      // items in the storage
+    assign s_ready = ready_q;
+    wire push = s_valid & s_ready;
+    reg st_full;                         // the storage is not empty (a register: keeps rd shallow)
+    wire inc = push & ~rd, dec = rd & ~push;
+    wire [AW:0] cnt_n = cnt + {{AW{dec}}, inc | dec};
+    wire cnt_is1 = (cnt == {{AW{1'b0}}, 1'b1});
+    wire cnt_gt1 = (cnt[AW:1] != {AW{1'b0}});
+    wire pop = q0_v & m_ready;
+    // read when the queue, with the item in flight, holds at most 2 (whatever this cycle's pop); the queue
+    // fills from q0 up, so that is: q2 empty, and not q1 full with an item in flight
+    wire rd = st_full && !q2_v && !(q1_v && rd_pending);
+    localparam [AW:0] ROOM_LAST = (1 << AW) - 2;
+
+    generate
+        if (LUTRAM != 0) begin : g_lutram
+            (* ram_style = "distributed" *) reg [W-1:0] mem[0:(1 << AW) - 1];
+            always @(posedge clk) begin
+                if (push) mem[wptr[AW-1:0]] <= s_data;
+                if (rd) rdata <= mem[rptr[AW-1:0]];
+            end
+        end else begin : g_ram
+            reg [W-1:0] mem[0:(1 << AW) - 1];
+            always @(posedge clk) begin
+                if (push) mem[wptr[AW-1:0]] <= s_data;
+                if (rd) rdata <= mem[rptr[AW-1:0]];
+            end
+        end
+    endgenerate
+
+    // the queue after this cycle's pop, then the arriving item (rd_pending) joins at the end
+    wire [W-1:0] p0 = pop ? q1 : q0, p1 = pop ? q2 : q1;
+    wire p0_v = pop ? q1_v : q0_v, p1_v = pop ? q2_v : q1_v, p2_v = pop ? 1'b0 : q2_v;
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            wptr <= {(AW + 1) {1'b0}};
+            rptr <= {(AW + 1) {1'b0}};
+            rd_pending <= 1'b0;
+            ready_q <= 1'b0;
+            cnt <= {(AW + 1) {1'b0}};
+            st_full <= 1'b0;
+            q0_v <= 1'b0;
+            q1_v <= 1'b0;
+            q2_v <= 1'b0;
+        end else begin
+            if (push) wptr <= wptr + {{AW{1'b0}}, 1'b1};
+            if (rd) rptr <= rptr + {{AW{1'b0}}, 1'b1};
+            cnt <= cnt_n;
+            // not empty next: more than one now, or one not read, or a push (no carry chain in the way)
+            st_full <= cnt_gt1 | (cnt_is1 & ~dec) | inc;
+            ready_q <= (cnt <= ROOM_LAST);
+            rd_pending <= rd;
+            q0 <= p0_v ? p0 : rdata;
+            q1 <= p1_v ? p1 : rdata;
+            q2 <= p2_v ? q2 : rdata;
+            q0_v <= p0_v | rd_pending;
+            q1_v <= p1_v | (p0_v & rd_pending);
+            q2_v <= p2_v | (p1_v & rd_pending);
+        end
+    end
+    assign m_valid = q0_v;
+    assign m_data = q0;
+endmodule
+`default_nettype wire

@@ -1,0 +1,38 @@
+// board_shaders.cpp - shader-pass models for the board model (see board_shaders.h).
+#include "board_shaders.h"
+
+#include "setup_model.h"
+
+namespace spec {
+namespace board {
+
+Shader host_shader(const Model& m, host::GammaRule rule) {
+    return [&m, rule](const ShadeIn& in) {
+        host::SpanEnds e;
+        e.n1 = host::Vec(in.n1[0], in.n1[1], in.n1[2]);
+        e.n2 = host::Vec(in.n2[0], in.n2[1], in.n2[2]);
+        e.h1 = e.h2 = host::Vec(in.light[0], in.light[1], in.light[2]);
+        const host::SpanSetup st = host::setup_span(m, e, in.strength / 32768.0, in.n, in.l, rule);
+        return m.span(st.regs);
+    };
+}
+
+Shader rtl_shader(const Model& m) {
+    static const SetupModel setup;
+    return [&m](const ShadeIn& in) {
+        SetupInput si;
+        for (int k = 0; k < 3; ++k) {
+            si.n1[k] = in.n1[size_t(k)];
+            si.n2[k] = in.n2[size_t(k)];
+            si.h1[k] = si.h2[k] = in.light[size_t(k)];
+        }
+        si.strength = in.strength;
+        si.n = in.n;
+        si.l = in.l;
+        si.midpoint = true;
+        return m.span(setup.run(si).regs);
+    };
+}
+
+}  // namespace board
+}  // namespace spec
