@@ -25,8 +25,9 @@
 // These are checked by bounded model checking from reset (formal.py's bmc cycles) and reached by covers.
 // For LANES = 1 the wrapper also asserts helper invariants over the core's internal state (below: a shadow of
 // the walk per pipeline position, the skid buffer, the running span, prep, head and tail tied to f_l, the
-// no-deadlock distance), written for a k = 1 induction step; they hold in the bounded check, but the induction
-// step has not been seen to finish (z3 over 15 minutes on a loaded machine), so formal.py's depth is still None.
+// no-deadlock distance), which make every assertion inductive with k = 1: with the base case, the properties
+// hold for traces of any length (formal.py's spec_stream job; its induction step asks one query per
+// assertion, formal/induct.py). LANES = 2 and 4 are bounded checks.
 `default_nettype none
 `include "spec_params.vh"
 module fv_spec_stream #(
