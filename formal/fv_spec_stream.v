@@ -211,7 +211,7 @@ module fv_spec_stream #(
     // They are written for LANES = 1 (the running span R's registers of the one-slot generator); with LANES = 2
     // and 4 they are not asserted (f_hp = 0), and those jobs are bounded checks of the properties above.
 `ifdef FV_NO_HELPERS
-    wire f_hp = 1'b0;        // the cover step (formal.py's cover_defines): covers need no invariants
+    wire f_hp = 1'b0;        // covers and mutants (formal.py's lean_defines): the properties only
 `else
     wire f_hp = f_past && LANES == 1;
 `endif
