@@ -7,13 +7,18 @@ reads rtl/ at those widths, flattens the core, makes the internal signals the pr
 with z3 then runs
   - the base case: every assertion holds in every cycle of every trace from reset up to DEPTH cycles (BMC),
   - the induction step: DEPTH cycles in which the assertions hold are always followed by one in which
-    they hold too; with the base case this proves them for traces of any length (unbounded),
+    they hold too; with the base case this proves them for traces of any length (unbounded). A job with
+    split=True runs it through formal/induct.py, which asks the same question once per assertion (DEPTH
+    cycles in which all hold, then one in which that one fails) in one incremental solver session: the
+    one query over all assertions at once (yosys-smtbmc -i) did not finish for spec_stream in 16 minutes
+    (z3, and 10 minutes with yices); the split queries take about a minute with z3,
   - the covers: a trace reaches each `cover` within COVER cycles.
 It is what SymbiYosys does for `mode prove` and `mode cover`, without needing SymbiYosys.
 Exit code 0 only when every proof and every cover passed; a failing proof leaves a counterexample trace
 (VCD) in the work directory and says where.
 
 usage: formal.py [--specrom PATH] [--work DIR] [--jobs NAME,...] [--yosys yosys] [--smtbmc yosys-smtbmc]
+                 [--solver z3|yices] [--steps bmc,induction,cover] [--rtl DIR] [--step-timeout S]
                  [--mutants] [--data FILE.json]
 --data: also write the results (every step, its time, the covers reached; or every mutant) as JSON, which
 `make formal` / `make formal-mutants` put into docs/data/ for docs/verification.md (scripts/docgen.py). A proof
@@ -54,15 +59,26 @@ JOBS = {
         expose=["c_q", "dzeta_q", "zeta0_q", "n_q", "u_cnt5.q", "u_ctrl14.ff39", "u_ctrl14.gen40",
                 "u_ctrl14.ff41", "u_ctrl14.ff43", "u_ctrl14.ff44", "fresh8", "u_dp.vs", "start_q", "len_q"],
         depth=2, bmc=40, cover=48),
-    # spec_stream with LANES = 1, 2 (PACK = 1) and 4 (PACK = 0): bounded checks and covers only (no
-    # induction: the LANES core's internal invariants are not written; fv_spec_stream.v)
+    # spec_stream with LANES = 1, 2 (PACK = 1) and 4 (PACK = 0): the span generator's, the pipeline's and the
+    # output's flags made ports for the helper invariants of fv_spec_stream.v. LANES = 1: proved by induction
+    # (k = 1, one query per assertion: formal/induct.py); its base case needs only k cycles, and 12 take z3 about
+    # two minutes with the helper invariants (32 did not finish in 12 minutes: each cycle past the first pixel's
+    # latency costs more)
     "spec_stream": dict(
         core="spec_stream", wrapper="fv_spec_stream", params={},
-        expose=["ce", "u_gen.tk", "u_gen.pl", "u_gen.room", "u_gen.prep_v"],
+        expose=["ce", "u_gen.tk", "u_gen.pl", "u_gen.pl_n", "u_gen.room", "u_gen.prep_v", "u_gen.head_v",
+                "u_gen.tail_v", "u_gen.head_l", "u_gen.head_zg", "u_gen.tail", "u_gen.prep_lq0", "u_gen.prep_lq1",
+                "u_gen.prep_lq2p", "u_gen.prep_nlqm1", "u_gen.prep_nlqm2", "u_gen.prep_lr", "u_gen.r_v",
+                "u_gen.r_ntk", "u_gen.r_last1_bc", "u_gen.r_second", "u_gen.r_end", "u_gen.r_s", "u_gen.bc",
+                "u_gen.r_nt2", "u_gen.bv", "u_gen.blst", "ctl_v", "ctl_l", "have_q", "skid_v", "skid_keep",
+                "skid_last"],
         # the datapath's pixel value is cut off and left free (every value possible): the properties are
         # about flow control, and without the multipliers, ROMs and the 32-bit accumulator z3 is much faster
         cut=["dp_out"],
-        depth=None, bmc=32, cover=36),
+        # the covers and the mutants' bounded checks on a model without the helper invariants (lean_defines:
+        # FV_NO_HELPERS): a cover needs no assertion (z3 spent minutes evaluating them on every cover trace), and
+        # the mutants show what the properties catch, as before the helpers (deep bounded checks with them are slow)
+        depth=1, split=True, bmc=12, cover=36, lean_defines=["FV_NO_HELPERS"]),
     # spec_setup (issue 13, docs/setup.md): its credits and descriptor FIFO around the arithmetic, which is left
     # out (formal/fv_setup_pipe_stub.v: a 3-stage shift register passing n and l on); a 4-entry FIFO. The order
     # of the descriptors (each the next accepted beat's) is a bounded proof (bmc): proving it by induction would
@@ -87,7 +103,9 @@ JOBS = {
         cut=["u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
 }
 for _lanes, _pack in ((2, 1), (4, 0)):
-    JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"],
+    # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
+    JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"], depth=None, bmc=32,
+                                                                  lean_defines=None,
                                                                   params={"LANES": _lanes, "PACK": _pack})
 
 
@@ -139,9 +157,13 @@ MUTANTS = [
 ]
 
 
-def run(cmd, log, cwd):
+def run(cmd, log, cwd, timeout=None):
     with open(log, "w") as f:
-        p = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+        try:
+            p = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            f.write("\nformal.py: stopped after %.0f s (--step-timeout)\n" % timeout)
+            return 124
     return p.returncode
 
 
@@ -218,6 +240,8 @@ def run_mutants(a, work):
             continue
         open(path, "w").write(text.replace(old, new))
         job = JOBS[name]
+        if job.get("lean_defines"):
+            job = dict(job, defines=job.get("defines", []) + job["lean_defines"])
         if build_model(job, name, mdir, a.yosys, os.path.join(mdir, "rtl")) != 0:
             print("mutant %d: Yosys failed" % i)
             bad += 1
@@ -255,6 +279,7 @@ def main():
     ap.add_argument("--solver", default="z3")
     ap.add_argument("--rtl", default=os.path.join(ROOT, "rtl"), help="RTL directory (a mutant's, to see a proof fail)")
     ap.add_argument("--steps", default="bmc,induction,cover")
+    ap.add_argument("--step-timeout", type=float, help="stop a step (a failure) after this many seconds")
     ap.add_argument("--mutants", action="store_true", help="check that the properties fail on broken RTL")
     ap.add_argument("--data", help="write the results as JSON (docs/data/formal.json, formal_mutants.json)")
     a = ap.parse_args()
@@ -301,18 +326,28 @@ def main():
         steps = [
             ("bmc", "base case, %d cycles" % job["bmc"],
              base + ["-t", str(job["bmc"]), "--dump-vcd", name + "_bmc.vcd", smt]),
-            ("induction", "induction, k = %s" % job["depth"],
-             base + ["-i", "-t", str(job["depth"]), "--dump-vcd", name + "_induction.vcd", smt]),
+            ("induction", "induction, k = %s" % job["depth"] + (", per assertion" if job.get("split") else ""),
+             ([sys.executable, os.path.join(ROOT, "formal", "induct.py"), "-s", a.solver, "--unroll"]
+              if job.get("split") else base + ["-i"]) +
+             ["-t", str(job["depth"]), "--dump-vcd", name + "_induction.vcd", smt]),
             ("cover", "covers within %d cycles" % job["cover"],
-             base + ["-c", "-t", str(job["cover"]), "--dump-vcd", name + "_cover%.vcd", smt]),
+             base + ["-c", "-t", str(job["cover"]), "--dump-vcd", name + "_cover%.vcd",
+                     (name + "_cover.smt2") if job.get("lean_defines") else smt]),
         ]
+        if job.get("lean_defines") and "cover" in a.steps.split(","):
+            cjob = dict(job, defines=job.get("defines", []) + job["lean_defines"])
+            if build_model(cjob, name + "_cover", work, a.yosys, os.path.abspath(a.rtl)) != 0:
+                print("formal: %s: Yosys failed (cover model):\n%s" % (
+                    name, tail(os.path.join(work, name + "_cover_yosys.out"))))
+                failed += 1
+                continue
         for step, what, cmd in steps:
             if step not in a.steps.split(",") or step not in job.get("steps", [step]) or (
                     step == "induction" and job["depth"] is None):
                 continue
             log = os.path.join(work, "%s_%s.log" % (name, step))
             t1 = time.time()
-            rc = run(cmd, log, work)
+            rc = run(cmd, log, work, a.step_timeout)
             dt = time.time() - t1
             text = open(log).read()
             ok = rc == 0 and "PASSED" in text

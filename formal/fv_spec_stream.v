@@ -22,9 +22,12 @@
 //     next; nothing accepted before the reset comes out after it;
 //   - the span generator's registered enables equal their definitions (tk = ce & room & prep_v,
 //     pl = ~prep_v | tk; rtl/spec_spangen.v).
-// These are checked by bounded model checking from reset (formal.py's bmc cycles) and reached by covers; the
-// induction step would need invariants over the core's internal state (as the one-lane core of issue 12 had),
-// which are not written for the LANES core (docs/verification.md).
+// These are checked by bounded model checking from reset (formal.py's bmc cycles) and reached by covers.
+// For LANES = 1 the wrapper also asserts helper invariants over the core's internal state (below: a shadow of
+// the walk per pipeline position, the skid buffer, the running span, prep, head and tail tied to f_l, the
+// no-deadlock distance), which make every assertion inductive with k = 1: with the base case, the properties
+// hold for traces of any length (formal.py's spec_stream job; its induction step asks one query per
+// assertion, formal/induct.py). LANES = 2 and 4 are bounded checks.
 `default_nettype none
 `include "spec_params.vh"
 module fv_spec_stream #(
@@ -44,18 +47,42 @@ module fv_spec_stream #(
     localparam WW = 7;                                    // the no-deadlock counter
     localparam RESP = `SPEC_STREAM_LATENCY + 2;           // bound of the no-deadlock property
 
+    localparam NC = `SPEC_STREAM_LATENCY - 4;             // the pipeline's stages of ce (accumulator, datapath)
+    localparam SH = (LANES == 4) ? 2 : (LANES == 2) ? 1 : 0;
+    localparam QW = L_W - SH;                             // the span generator's beat counter
+    localparam NG = (L_W > 4) ? (L_W - 4 + 3) / 4 : 1;    // spec_spangen's zero flags of l
+    localparam LI = (LANES > 2) ? 2 : 1;
+    localparam DW = `SPEC_C_W + `SPEC_N_W + L_W + NG + 2 * `SPEC_ANG_W;   // a descriptor in the buffer
+
     wire s_axis_tready, m_axis_tvalid, m_axis_tlast;
     wire [LANES*OUT_W-1:0] m_axis_tdata;
     wire [LANES-1:0] m_axis_tkeep;
     // internals (Yosys `expose`)
-    wire ce, tk, pl, room, prep_v;
+    wire ce, tk, pl, pl_n, room, prep_v, head_v, tail_v, have_q, skid_v, skid_last;
+    wire r_v, r_ntk, r_last1_bc, r_second;
+    wire [LI-1:0] r_end, r_s;
+    wire [QW-1:0] bc, r_nt2, prep_nlqm1, prep_nlqm2;
+    wire prep_lq0, prep_lq1, prep_lq2p;
+    wire [1:0] prep_lr;
+    wire [L_W-1:0] head_l;
+    wire [NG-1:0] head_zg;
+    wire [DW-1:0] tail;
+    wire [LANES-1:0] bv, blst, skid_keep;
+    wire [NC*LANES-1:0] ctl_v, ctl_l;
 
     fv_core_stream dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready),
         .m_axis_tdata(m_axis_tdata), .m_axis_tkeep(m_axis_tkeep), .m_axis_tlast(m_axis_tlast),
-        .\dp_out.i (f_px), .dp_out(), .ce(ce), .\u_gen.tk (tk), .\u_gen.pl (pl), .\u_gen.room (room),
-        .\u_gen.prep_v (prep_v)
+        .\dp_out.i (f_px), .dp_out(), .ce(ce), .\u_gen.tk (tk), .\u_gen.pl (pl), .\u_gen.pl_n (pl_n),
+        .\u_gen.room (room), .\u_gen.prep_v (prep_v), .\u_gen.head_v (head_v), .\u_gen.tail_v (tail_v),
+        .\u_gen.head_l (head_l), .\u_gen.head_zg (head_zg), .\u_gen.tail (tail),
+        .\u_gen.prep_lq0 (prep_lq0), .\u_gen.prep_lq1 (prep_lq1), .\u_gen.prep_lq2p (prep_lq2p),
+        .\u_gen.prep_nlqm1 (prep_nlqm1), .\u_gen.prep_nlqm2 (prep_nlqm2), .\u_gen.prep_lr (prep_lr),
+        .\u_gen.r_v (r_v), .\u_gen.r_ntk (r_ntk), .\u_gen.r_last1_bc (r_last1_bc), .\u_gen.r_second (r_second),
+        .\u_gen.r_end (r_end), .\u_gen.r_s (r_s), .\u_gen.bc (bc), .\u_gen.r_nt2 (r_nt2),
+        .\u_gen.bv (bv), .\u_gen.blst (blst), .ctl_v(ctl_v), .ctl_l(ctl_l), .have_q(have_q), .skid_v(skid_v),
+        .skid_keep(skid_keep), .skid_last(skid_last)
     );
     wire [L_W-1:0] d_l = s_axis_tdata[`SPEC_DESC_L_LSB +: L_W];
 
@@ -87,6 +114,7 @@ module fv_spec_stream #(
     reg b_ends;                  // the beat holds a span's last pixel
     reg b_ends_mid;              // ... in a slot before its last kept one
     reg b_ends_last;             // ... in its last kept slot
+    reg b_over;                  // a pixel beyond its span's l (helper invariant)
     integer j;
     always @(*) begin
         e_id = f_ended;
@@ -95,9 +123,11 @@ module fv_spec_stream #(
         b_ends = 1'b0;
         b_ends_mid = 1'b0;
         b_ends_last = 1'b0;
+        b_over = 1'b0;
         for (j = 0; j < LANES; j = j + 1) begin
             if (m_axis_tkeep[j]) begin
                 if (e_id == f_acc) b_extra = 1'b1;
+                if (e_run > {1'b0, f_l[e_id]}) b_over = 1'b1;
                 if (e_run == {1'b0, f_l[e_id]}) begin
                     b_ends = 1'b1;
                     if (j + 1 < LANES && m_axis_tkeep[(j + 1 < LANES) ? j + 1 : j]) b_ends_mid = 1'b1;
@@ -153,8 +183,10 @@ module fv_spec_stream #(
             if (f_rst_q && !f_rst_q2) assert (s_axis_tready);
             // the registered enables are their definitions
             if (f_rst_q && rst_n) assert (tk == (ce & room & prep_v) && pl == (~prep_v | tk));
+`ifndef FV_NO_WAIT
             // no deadlock
             assert (f_wait < RESP);
+`endif
         end
         if (f_past && m_axis_tvalid) begin
             assert (keep_ok);
@@ -168,6 +200,232 @@ module fv_spec_stream #(
             end
         end
     end
+
+    // ---- helper invariants (for the induction step) --------------------------------------------------------
+    // Where every pixel is, oldest first: the output register, the skid buffer (beats with a beat-level last),
+    // the pipeline's stages NC .. 1 and the span generator's presented beat (a valid and a last flag per slot),
+    // the rest of the running span R, prep, head, tail. Walking through them from the pixel last out (f_ended,
+    // f_run) gives every valid slot the span and pixel number it must hold; its last flag must say whether it
+    // is that span's (l + 1)-th (l from f_l), and after the walk R, prep, head and tail hold the next spans in
+    // order up to the last accepted one (f_acc).
+    // They are written for LANES = 1 (the running span R's registers of the one-slot generator); with LANES = 2
+    // and 4 they are not asserted (f_hp = 0), and those jobs are bounded checks of the properties above.
+`ifdef FV_NO_HELPERS
+    wire f_hp = 1'b0;        // covers and mutants (formal.py's lean_defines): the properties only
+`else
+    wire f_hp = f_past && LANES == 1;
+`endif
+    wire [IW-1:0] o_id = m_axis_tvalid ? e_id : f_ended;   // after the output register
+    wire [L_W:0] o_run = m_axis_tvalid ? e_run : f_run;
+    reg [IW-1:0] k_id;
+    reg [L_W:0] k_run;
+    reg k_extra, k_ends, k_ends_mid, k_ends_last, k_over;
+    always @(*) begin
+        k_id = o_id;
+        k_run = o_run;
+        k_extra = 1'b0;
+        k_ends = 1'b0;
+        k_ends_mid = 1'b0;
+        k_ends_last = 1'b0;
+        k_over = 1'b0;
+        for (j = 0; j < LANES; j = j + 1) begin
+            if (skid_keep[j]) begin
+                if (k_id == f_acc) k_extra = 1'b1;
+                if (k_run > {1'b0, f_l[k_id]}) k_over = 1'b1;
+                if (k_run == {1'b0, f_l[k_id]}) begin
+                    k_ends = 1'b1;
+                    if (j + 1 < LANES && skid_keep[(j + 1 < LANES) ? j + 1 : j]) k_ends_mid = 1'b1;
+                    else k_ends_last = 1'b1;
+                    k_id = k_id + 1'b1;
+                    k_run = 0;
+                end else begin
+                    k_run = k_run + 1'b1;
+                end
+            end
+        end
+    end
+    wire [LANES:0] skeep_x = {1'b0, skid_keep};
+    wire skeep_ok = (skid_keep != 0) && ((skeep_x & (skeep_x + 1'b1)) == 0);
+
+    // the slots with their own flags: position p = 0 .. NC - 1 is the pipeline's stage NC - p, p = NC the
+    // presented beat; slot j of position p at [p * LANES + j]
+    localparam NP = NC + 1;
+    wire [NP*LANES-1:0] pv, pls;
+    genvar p, q;
+    wire [IW-1:0] r_id;
+    wire [L_W:0] r_run;
+    generate
+        for (p = 0; p < NC; p = p + 1) begin : g_pos
+            assign pv[p*LANES +: LANES] = ctl_v[(NC-1-p)*LANES +: LANES];
+            assign pls[p*LANES +: LANES] = ctl_l[(NC-1-p)*LANES +: LANES];
+        end
+    endgenerate
+    assign pv[NC*LANES +: LANES] = bv;
+    assign pls[NC*LANES +: LANES] = blst;
+    // the shadow: the walk's value at the start of each position (the span and pixel its slot 0 must hold if
+    // valid), moved along by the pipeline's own enable; the walk within a position is computed from it, so every
+    // invariant below relates one position to its neighbour
+    reg [NP*IW-1:0] sh_id;
+    reg [NP*(L_W+1)-1:0] sh_run;
+    wire [IW-1:0] q_id[0:NP*LANES];
+    wire [L_W:0] q_run[0:NP*LANES];
+    wire [IW-1:0] x_id = skid_v ? k_id : o_id;             // after the output register and the skid buffer
+    wire [L_W:0] x_run = skid_v ? k_run : o_run;
+    assign q_id[0] = x_id;
+    assign q_run[0] = x_run;
+    integer i;
+    always @(posedge clk) begin
+        if (!rst_n) begin
+            sh_id <= 0;
+            sh_run <= 0;
+        end else if (ce) begin
+            for (i = 0; i < NP - 1; i = i + 1) begin
+                sh_id[i*IW +: IW] <= sh_id[(i+1)*IW +: IW];
+                sh_run[i*(L_W+1) +: L_W+1] <= sh_run[(i+1)*(L_W+1) +: L_W+1];
+            end
+            sh_id[(NP-1)*IW +: IW] <= q_id[NP*LANES];
+            sh_run[(NP-1)*(L_W+1) +: L_W+1] <= q_run[NP*LANES];
+        end
+    end
+    generate
+        for (q = 0; q < NP * LANES; q = q + 1) begin : g_slot
+            wire [IW-1:0] in_id = (q % LANES == 0) ? sh_id[(q / LANES)*IW +: IW] : q_id[q];
+            wire [L_W:0] in_run = (q % LANES == 0) ? sh_run[(q / LANES)*(L_W+1) +: L_W+1] : q_run[q];
+            wire [L_W-1:0] l = f_l[in_id];
+            wire ends = in_run == {1'b0, l};
+            wire [IW-1:0] d = in_id - f_ended;
+            assign q_id[q + 1] = (pv[q] && ends) ? in_id + 1'b1 : in_id;
+            assign q_run[q + 1] = !pv[q] ? in_run : ends ? {(L_W + 1) {1'b0}} : in_run + 1'b1;
+            always @(*) begin
+                if (f_hp && pv[q]) begin
+                    assert (d < f_acc - f_ended);                    // a pixel some span asked for
+                    assert (in_run <= {1'b0, l});                    // within its span
+                    assert (pls[q] == ends);                         // last flag on the span's last only
+                end
+            end
+        end
+        // neighbours: each position starts where the one before ended; no more spans than positions
+        for (p = 0; p < NP; p = p + 1) begin : g_link
+            wire [IW-1:0] d = sh_id[p*IW +: IW] - f_ended;
+            always @(*) begin
+                if (f_hp) begin
+                    if (p == 0) assert (sh_id[0 +: IW] == x_id && sh_run[0 +: L_W+1] == x_run);
+                    else assert (sh_id[p*IW +: IW] == q_id[p*LANES] && sh_run[p*(L_W+1) +: L_W+1] == q_run[p*LANES]);
+                    assert (d <= (p + 2) * LANES);
+                end
+            end
+        end
+        // each position's beat: kept slots 0 .. k-1 (or none); PACK = 0: one span per beat, ending in its last
+        // kept slot when a slot is empty
+        for (p = 0; p < NP; p = p + 1) begin : g_beat
+            wire [LANES-1:0] v = pv[p*LANES +: LANES];
+            wire [LANES-1:0] ls = pls[p*LANES +: LANES];
+            wire [LANES:0] vx = {1'b0, v};
+            wire [LANES:0] lsx = {1'b0, ls & v};
+            always @(*) begin
+                if (f_hp) begin
+                    assert ((vx & (vx + 1'b1)) == 0);
+                    if (PACK == 0) begin
+                        assert ((lsx & {1'b0, v[LANES-1:0] >> 1}) == 0);   // no kept slot after a last
+                        if (v != 0 && !(&v)) assert ((ls & v & ~(v >> 1)) != 0);   // ends in its last kept slot
+                    end
+                end
+            end
+        end
+    endgenerate
+    // after the presented beat: R has the rest of span r_id, from pixel r_run on (r_run = 0: no span half-way)
+    assign r_id = q_id[NP*LANES];
+    assign r_run = q_run[NP*LANES];
+    wire [L_W-1:0] r_l = f_l[r_id];
+    wire r_mid = r_run != {(L_W + 1) {1'b0}};               // a span half-way after the presented beat
+    wire [IW-1:0] p_id = r_id + {{(IW - 1) {1'b0}}, r_mid}; // prep's span
+    wire [IW-1:0] h_id = p_id + prep_v;                    // the head's
+    wire [IW-1:0] t_id = h_id + head_v;                    // the tail's
+    wire [IW-1:0] e_next = t_id + tail_v;                  // after all: the next descriptor's number
+    wire [L_W-1:0] p_l = f_l[p_id];
+    wire [L_W-1:0] t_l = tail[2 * `SPEC_ANG_W + NG +: L_W];
+    wire [NG-1:0] t_zg = tail[2 * `SPEC_ANG_W +: NG];
+    wire [QW-1:0] p_lq = p_l[L_W-1:SH];
+    wire [1:0] p_lr = (LANES == 1) ? 2'd0 : (LANES == 2) ? {1'b0, p_l[0]} : p_l[1:0];
+    wire [QW-1:0] r_lq = r_l[L_W-1:SH];
+    // the zero flags of l's 4-bit groups above its low four bits (spec_spangen's d_zg)
+    function [NG-1:0] zg_of(input [L_W-1:0] lv);
+        integer g;
+        begin
+            for (g = 0; g < NG; g = g + 1) zg_of[g] = (L_W > 4) ? ((lv >> (4 + 4 * g)) & 4'hf) == 0 : 1'b1;
+        end
+    endfunction
+    // cycles of a ready sink until a beat is offered: from the oldest valid position
+    wire [WW:0] nr[0:NP];
+    assign nr[NP] = prep_v ? NC + 2 : head_v ? NC + 3 : {(WW + 1) {1'b1}};
+    generate
+        for (p = 0; p < NP; p = p + 1) begin : g_near
+            assign nr[p] = pv[p*LANES] ? p + 1 : nr[p + 1];
+        end
+    endgenerate
+    wire [WW:0] near = m_axis_tvalid ? 0 : nr[0];
+
+    always @(*) begin
+        if (f_hp) begin
+            // the state a reset edge leaves (the first cycle has rst_n = 0)
+            if (!f_past_2) assert (!f_rst_q);
+            if (!f_rst_q) begin
+                assert (!head_v && !tail_v && !prep_v && !r_v && !r_ntk && bv == 0 && ctl_v == 0 && !skid_v);
+                assert (!have_q && ce && f_acc == 0 && f_ended == 0 && f_run == 0 && f_wait == 0);
+            end
+            // the output register and the skid buffer
+            if (f_rst_q) assert (s_axis_tready == !tail_v);
+            assert (ce == !skid_v);
+            assert (have_q == (skid_v | pv[0]));
+            if (skid_v) assert (m_axis_tvalid);
+            if (m_axis_tvalid) assert (!b_over);
+            if (skid_v) begin
+                assert (skeep_ok && !k_extra && !k_over);
+                if (PACK == 0) begin
+                    assert (!k_ends_mid && skid_last == k_ends_last);
+                    if (!(&skid_keep)) assert (k_ends_last);
+                end else begin
+                    assert (skid_last == k_ends);
+                end
+            end
+            if (f_run != 0 && !m_axis_tvalid) assert (f_run <= {1'b0, f_l[f_ended]});
+            // the span generator's enables
+            assert (tk == (ce & room & prep_v) && pl == (~prep_v | tk) && pl_n == ~pl);
+            assert (!r_ntk || r_v);
+            // the descriptor buffer
+            if (tail_v) assert (head_v);
+            if (head_v) assert (head_l == f_l[h_id] && head_zg == zg_of(head_l));
+            if (tail_v) assert (t_l == f_l[t_id] && t_zg == zg_of(t_l));
+            if (prep_v) begin
+                assert (prep_lr == p_lr && prep_lq0 == (p_lq == 0) && prep_lq1 == (p_lq == 1) &&
+                        prep_lq2p == (p_lq >= 2));
+                assert (prep_nlqm1 == ~(p_lq - 1'b1) && prep_nlqm2 == ~(p_lq - 2'd2));
+            end
+            // every accepted descriptor is somewhere: numbers from f_ended to f_acc - 1 without a gap
+            assert (e_next == f_acc);
+`ifndef FV_NO_WAIT
+            // how long the sink can wait: the oldest pixel gets one stage closer every cycle
+            if (f_acc != f_ended) assert (near <= NC + 3);
+            if (f_wait != 0) assert ({1'b0, f_wait} + near <= NC + 3);
+`endif
+        end
+    end
+    // the running span R (one slot per beat)
+    generate
+        if (LANES == 1) begin : g_r1
+            always @(*) begin
+                if (f_hp) begin
+                    assert (r_v == r_mid);
+                    if (r_v) begin
+                        assert (bv[0] && r_run <= {1'b0, r_l});
+                        assert (bc == r_run - 1'b1 && r_nt2 == ~(r_lq - 2'd2));
+                        assert ((r_ntk ? r_last1_bc : 1'b1) == (r_run == {1'b0, r_l}));
+                        if (!r_ntk) assert (!r_last1_bc);
+                    end
+                end
+            end
+        end
+    endgenerate
 
     // ---- covers ----------------------------------------------------------------------------------------------
     reg [IW-1:0] f_ended_q;
