@@ -111,8 +111,8 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 
 # Mutants (--mutants): small bugs put into a copy of rtl/; a bounded check of the named job (MUTANT_BMC
 # cycles deep) must fail on each, which shows that the properties can fail and what they catch. The one
-# equivalent change must pass (spec_unit's; for spec_stream a passing 24-cycle check takes z3 over ten
-# minutes, the failing ones 1-2 minutes each).
+# equivalent change must pass (spec_unit's; for spec_stream a passing check takes z3 far longer than the
+# failing ones, which stop at their first counterexample: over ten minutes at 24 cycles).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
               "spec_shader": 34}
 MUTANTS = [
