@@ -272,7 +272,7 @@ formal-mutants: deps deps-formal configure
 
 coverage: deps
 	cmake -S . -B $(BUILD)-cov -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE) -DSPEC_COVERAGE=ON
-	$(call cmake_build,$(BUILD)-cov,--target spec_tests specsim)
+	$(call cmake_build,$(BUILD)-cov,--target spec_tests specsim boardsim-quick)
 	rm -rf $(BUILD)-cov/coverage $(BUILD)-cov/annotated
 	cd $(BUILD)-cov && SPEC_COVERAGE_DIR=coverage ./spec_tests --gtest_brief=1
 	python3 scripts/coverage.py --goal 100 --uncovered --annotate $(BUILD)-cov/annotated --json docs/data/coverage.json \
