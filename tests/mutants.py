@@ -29,7 +29,7 @@ MUTANTS = [
         name="table-position-halved",
         file="rtl/spec_mul11.v",
         old="index <= pos_r;",
-        new="index <= {pos_r[TBL_AW-1:1], 1'b0};",
+        new="index <= {pos_r[TBL_AW-1:1], pos_r[0] & 1'b0};",
         target="spec_tests",
         cmd=["./spec_tests", "--gtest_filter=SpecUnit.WithinDoublePrecisionBoundsForEveryN"],
         marker="fixed-point error grew",
