@@ -61,6 +61,18 @@ MUTANTS = [
             "the old driver stopped reading at the expected count and never saw them",
     ),
     dict(
+        name="datapath-stall-leaks",
+        file="rtl/spec_datapath.v",
+        old="else if (ce) vs_q <= {vs_q[LAT-1:1], in_valid};",
+        new="else vs_q <= {vs_q[LAT-1:1], in_valid};",
+        target="spec_tests",
+        cmd=["./spec_tests", "--gtest_filter=Datapath.StallHoldsEveryStage"],
+        marker="a stall moved the valid flags",
+        passes=[["./spec_tests", "--gtest_filter=SpecUnit.EqualsBitExactModelOnRandomSpans"]],
+        why="spec_datapath's own valid pipeline (CTRL = 1) advances during a stall; spec_unit ties ce to 1, so "
+            "no test of spec_unit can see it, only the datapath's own test with a stalling ce",
+    ),
+    dict(
         name="fig8-limit-moved",
         file="sim/model/analysis.cpp",
         old="if (q <= limit) {",
