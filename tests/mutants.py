@@ -73,6 +73,19 @@ MUTANTS = [
             "no test of spec_unit can see it, only the datapath's own test with a stalling ce",
     ),
     dict(
+        name="shader-flags-stale",
+        file="rtl/spec_shader.v",
+        old="if (pop && fcnt == {{FLAGS_AW{1'b0}}, 1'b1}) m_axis_tuser <= d_flags;",
+        new="if (pop && fcnt == {{FLAGS_AW{1'b0}}, 1'b1}) m_axis_tuser <= fmem[fr_next];",
+        target="spec_tests",
+        cmd=["./spec_tests", "--gtest_filter=Shader.FlagsWhenTheOnlySpanLeavesAsTheNextArrives"],
+        marker="tuser, span 1",
+        passes=[["./spec_tests", "--gtest_filter=Shader.PipelinedEqualsModelsUnderStalls"]],
+        why="when the only span in spec_stream hands over its last pixel in the clock a new descriptor arrives, "
+            "spec_shader takes the new span's flags from the FIFO's memory, which that edge is only writing; "
+            "random stalls never met that clock",
+    ),
+    dict(
         name="fig8-limit-moved",
         file="sim/model/analysis.cpp",
         old="if (q <= limit) {",

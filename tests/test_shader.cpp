@@ -137,3 +137,57 @@ TEST(Shader, ResetDropsSpansInFlight) {
     const auto fresh = shader_inputs(rng, sm.format(), 100, 10);
     expect_pixels(sm, Model(), fresh, d.run(fresh, 1.0, 0.7, rng));
 }
+
+// The flags FIFO's corner: a descriptor reaches spec_stream in the very clock in which the only span in it
+// hands over its last pixel. The new span's flags must come from its descriptor, not from the FIFO's memory
+// (written at that same edge). The gap between two spans is swept so that one gap meets that clock exactly:
+// then the second span's pixel follows the first span's last by spec_stream's latency.
+TEST(Shader, FlagsWhenTheOnlySpanLeavesAsTheNextArrives) {
+    const SetupModel sm;
+    std::mt19937_64 rng(56);
+    ShaderDriver<Vspec_shader> d;
+    auto& t = d.top();
+    int met = 0;
+    for (unsigned gap = 0; gap < 80; ++gap) {
+        SetupInput a = random_case(rng, sm.format(), SpanKind::random, static_cast<unsigned>(rng() % 1024), 8);
+        a.l = 3;
+        SetupInput b;
+        do {
+            b = random_case(rng, sm.format(), SpanKind(rng() % unsigned(SpanKind::count)),
+                            static_cast<unsigned>(rng() % 1024), 8);
+            b.l = 0;
+        } while (sm.run(b).flags == sm.run(a).flags);
+        d.reset();
+        std::vector<ShaderPixel> px;
+        std::vector<uint64_t> when;
+        auto clock = [&](const SetupInput* s) {   // one clock, offering s (if any); true when it was taken
+            t.s_axis_tvalid = s != nullptr;
+            if (s) {
+                uint32_t w[setup_params::BEAT_W / 32];
+                pack_setup_beat(*s, w);
+                for (int j = 0; j < setup_params::BEAT_W / 32; ++j) t.s_axis_tdata[j] = w[j];
+            }
+            t.m_axis_tready = 1;
+            t.eval();
+            const bool taken = t.s_axis_tvalid && t.s_axis_tready;
+            if (t.m_axis_tvalid) {
+                px.push_back({t.m_axis_tdata, t.m_axis_tlast != 0, static_cast<unsigned>(t.m_axis_tuser)});
+                when.push_back(d.cycle());
+            }
+            d.step();
+            return taken;
+        };
+        while (!clock(&a)) {}
+        for (unsigned i = 0; i < gap; ++i) clock(nullptr);
+        while (!clock(&b)) {}
+        for (int i = 0; i < 2000 && px.size() < 5; ++i) clock(nullptr);
+        ASSERT_EQ(px.size(), 5u) << "gap " << gap;
+        expect_pixels(sm, Model(), {a, b}, px);
+        if (HasFatalFailure()) {
+            ADD_FAILURE() << "gap " << gap;
+            return;
+        }
+        if (when[4] - when[3] == uint64_t(spec_params::STREAM_LATENCY)) ++met;
+    }
+    EXPECT_EQ(met, 1) << "the sweep of gaps must meet the corner exactly once";
+}
