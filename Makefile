@@ -228,6 +228,12 @@ synth: build deps-synth
 	        --data $(BUILD)/synth/synth.json || exit 1; \
 	done
 	@mkdir -p docs/data && cp $(BUILD)/synth/synth.json docs/data/synth.json
+	@# the netlist passes (syn/dsp_pack.py, and syn/lut_dedup.py on the iCE40) against the netlist before them,
+	@# simulated side by side (docs/stream.md); a difference stops make synth
+	python3 syn/dsp_pack_check.py --target ice40-up5k --config up5k --lanes 2 --cycles 2000 \
+	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
+	python3 syn/dsp_pack_check.py --target ecp5-25f --config up5k --lanes 1 --cycles 2000 \
+	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom
 	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
