@@ -96,14 +96,25 @@ module spec_setup_engine #(
     //   23: lambda    vector 5, plane (z,x), angle
     localparam [7*NRUN-1:0] RUNS = 168'hb8f29b1b6ed4b342e8c3346465bb566c4c26488900;
     reg [4:0] run;
+    // the current run's fields and the run tests below are registers, loaded with the run number (the table is
+    // read at the next run's number one clock ahead), so that no adder sees run -> table -> select
+    reg [6:0] run_fields;
+    reg [4:0] run_tests;
     wire [2:0] run_vec;
     wire run_plane, run_halve;
     wire [1:0] run_role;
-    assign {run_vec, run_plane, run_role, run_halve} = RUNS[run*7 +: 7];
+    wire run_p2n2, run_p2p, run_p3n2, run_gamma, run_last;   // runs 6, 9, 10, 22, NRUN - 1
+    assign {run_vec, run_plane, run_role, run_halve} = run_fields;
+    assign {run_p2n2, run_p2p, run_p3n2, run_gamma, run_last} = run_tests;
+    function [4:0] tests_of(input [4:0] r);
+        tests_of = {r == 5'd6, r == 5'd9, r == 5'd10, r == 5'd22, r == NRUN - 1};
+    endfunction
 
     localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
     reg [2:0] st;
     reg [4:0] it;                         // micro-rotation
+    reg rph;                              // its clock: 0 operands, 1 sums
+    wire [4:0] run_nx = (st == ST_LOAD) ? 5'd0 : run + 5'd1;   // the run that a run change loads
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
     reg [W-1:0] vmem[0:31];
@@ -134,8 +145,18 @@ module spec_setup_engine #(
     localparam SHB = (VEC_W <= 16) ? 4 : (VEC_W <= 32) ? 5 : 6;
     reg [SHB-1:0] ld_sh;                  // the variable part of the shift of the vector being loaded
     wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
-    wire [VEC_W-1:0] mx = cx[VEC_W-1] ? -cx : cx, my = cy[VEC_W-1] ? -cy : cy, mz = cz[VEC_W-1] ? -cz : cz;
-    wire [VEC_W-1:0] mor = mx | my | mz;   // its leading one is the largest magnitude's
+    // the vector's shift, P's axis and the zero test through three free-running registers (magnitudes; their OR
+    // and P's axis; the shift): the vector's first load clock (ld_c = 0) waits for them (ph 0..3)
+    reg [VEC_W-1:0] mx, my, mz, mor;       // mor: its leading one is the largest magnitude's
+    reg [1:0] pk_q;
+    reg [SHB-1:0] sh_q;
+    always @(posedge clk) begin
+        mx <= cx[VEC_W-1] ? -cx : cx;
+        my <= cy[VEC_W-1] ? -cy : cy;
+        mz <= cz[VEC_W-1] ? -cz : cz;
+        mor <= mx | my | mz;
+        pk_q <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
+    end
     reg [5:0] lead;
     integer k;
     always @* begin
@@ -155,10 +176,15 @@ module spec_setup_engine #(
     localparam [5:0] VM1 = VEC_W - 1;
     wire [5:0] sh_var = VM1 - lead;       // 0 .. VEC_W - 1
     wire unused_sh = &{1'b0, sh_var};
+    always @(posedge clk) sh_q <= sh_var[SHB-1:0];
 
     // ---- the CORDIC lane -------------------------------------------------------------------------------------
     reg signed [W-1:0] la, lb, acc;       // the pair, the third coordinate's gain sum
+    // the angle lane's adder in two halves: the high half adds (with the low half's carry, registered) one clock
+    // after the low half; nothing reads lz in that clock (the lane's directions come from the pair)
+    localparam ZL = ZW / 2;
     reg signed [ZW-1:0] lz;
+    reg lz_cy, lz_hi;                     // the low half's carry; the high half adds in this clock
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
@@ -205,16 +231,33 @@ module spec_setup_engine #(
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
     wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
-    wire signed [W-1:0] la_neg = -la, lb_neg = -lb;
+    // registers beside the lane, each an adder's or a select's output (free-running): the word read, rounded to
+    // half for a halving run; the pair negated (the turn before the micro-rotations reads them a clock after the
+    // pair is loaded)
+    reg signed [W-1:0] v_in, la_neg, lb_neg;
+    always @(posedge clk) begin
+        v_in <= run_halve ? v_half : $signed(v_rd);
+        la_neg <= -la;
+        lb_neg <= -lb;
+    end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
+    // the micro-rotation's operands (rph 0) and the third coordinate's gain term (or 0) with its carry in
+    reg signed [W-1:0] op_a, op_b, op_t;
+    reg signed [ZW-1:0] op_z;
+    reg op_d, op_tc, op_zc;
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
-    wire lb_small = (lb < TAU) && (lb > -TAU);
-    wire acc_small = (acc < TAU) && (acc > -TAU);
+    reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
+    always @(posedge clk) begin
+        lb_small <= (lb < TAU) && (lb > -TAU);
+        acc_small <= (acc < TAU) && (acc > -TAU);
+    end
 
     always @(posedge clk) begin
         v_we <= 1'b0;
         be_start <= 1'b0;
+        lz_hi <= 1'b0;
+        if (lz_hi) lz[ZW-1:ZL] <= lz[ZW-1:ZL] + op_z[ZW-1:ZL] + {{(ZW - ZL - 1) {1'b0}}, lz_cy};
         if (rst) begin
             st <= ST_IDLE;
             s_tready <= 1'b0;
@@ -253,10 +296,14 @@ module spec_setup_engine #(
                         end
                     end else if (ld_c == 2'd0) begin
                         // the vector's shift (input vectors) from its components' leading one
-                        ld_sh <= sh_var[SHB-1:0];
-                        if (ld_v == 3'd0) pk <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
-                        if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
-                        ld_c <= 2'd1;
+                        ph <= ph + 4'd1;
+                        if (ph == 4'd3) begin
+                            ph <= 4'd0;
+                            ld_sh <= sh_q;
+                            if (ld_v == 3'd0) pk <= pk_q;
+                            if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
+                            ld_c <= 2'd1;
+                        end
                     end else begin
                         v_we <= 1'b1;
                         v_wa <= {ld_v, ld_c - 2'd1};
@@ -266,7 +313,9 @@ module spec_setup_engine #(
                             ld_c <= 2'd0;
                             ld_v <= ld_v + 3'd1;
                             if (ld_v == 3'd5) begin
-                                run <= 5'd0;
+                                run <= run_nx;
+                                run_fields <= RUNS[run_nx*7 +: 7];
+                                run_tests <= tests_of(run_nx);
                                 ph <= 4'd0;
                                 st <= bad ? ST_BE : ST_RD;
                                 be_start <= bad;
@@ -277,28 +326,39 @@ module spec_setup_engine #(
                     end
                 end
                 // read a, b, t of the run's vector (the memory's read is registered: data one clock later)
+                // (a word read at phase k is in v_rd at k + 2 and in v_in, rounded to half or not, at k + 3; the
+                // negated pair at phase 6)
                 ST_RD: begin
                     ph <= ph + 4'd1;
                     case (ph)
                         4'd0: v_ra <= {run_vec, ca};
                         4'd1: v_ra <= {run_vec, cb};
-                        4'd2: begin
-                            v_ra <= {run_vec, ct};
-                            la <= run_halve ? v_half : $signed(v_rd);
-                        end
-                        4'd3: lb <= run_halve ? v_half : $signed(v_rd);
-                        default: begin
+                        4'd2: v_ra <= {run_vec, ct};
+                        4'd3: la <= v_in;
+                        4'd4: lb <= v_in;
+                        // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
+                        // (and the angle runs' quarter turn of the angle lane: lz = 0 + op_z at phase 6)
+                        4'd5: begin
                             lts <= v_rd;
-                            acc <= !tc_first[1] ? {W{1'b0}} : tc_first[0] ? -($signed(v_rd) <<< 1) : ($signed(v_rd) <<< 1);
-                            it <= 5'd0;
+                            acc <= {W{1'b0}};
+                            op_t <= tc_first[1] ? (($signed(v_rd) <<< 1) ^ {W{tc_first[0]}}) : {W{1'b0}};
+                            op_tc <= tc_first[1] & tc_first[0];
                             lz <= {ZW{1'b0}};
+                            op_z <= (run_role == 2'd2 && la[W-1]) ? (lb[W-1] ? -HALF_PI : HALF_PI) : {ZW{1'b0}};
+                            op_zc <= 1'b0;
+                        end
+                        default: begin
+                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
+                            {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
+                            lz_hi <= 1'b1;
+                            it <= 5'd0;
+                            rph <= 1'b0;
                             // the turn before the micro-rotations: by pi (frame passes; the driver decides,
                             // followers replay), a quarter turn (angle runs)
                             if (run_role == 2'd2) begin
                                 if (la[W-1]) begin
                                     la <= lb[W-1] ? lb_neg : lb;
                                     lb <= lb[W-1] ? la : la_neg;
-                                    lz <= lb[W-1] ? -HALF_PI : HALF_PI;
                                 end
                             end else if ((run_role == 2'd0) ? la[W-1] : neg) begin
                                 la <= la_neg;
@@ -309,30 +369,48 @@ module spec_setup_engine #(
                         end
                     endcase
                 end
+                // a micro-rotation in two clocks: rph 0 registers the operands (shifted, the direction folded in:
+                // x - y = x + ~y + 1; the gain term or 0), rph 1 adds them (an adder each, nothing in front)
                 ST_ROT: begin
-                    // one adder each: the direction folded into the operand (x - y = x + ~y + 1)
-                    la <= la + (bs ^ {W{~d_now}}) + {{(W - 1) {1'b0}}, ~d_now};         // d: la + bs, else la - bs
-                    lb <= lb + (as ^ {W{d_now}}) + {{(W - 1) {1'b0}}, d_now};           // d: lb - as, else lb + as
-                    lz <= lz + (atan_i ^ {ZW{~d_now}}) + {{(ZW - 1) {1'b0}}, ~d_now};   // d: + atan, else - atan
-                    // the directions: the driver records them, followers replay them (a rotating register)
-                    drec <= {d_now, drec[ITERS-1:1]};
-                    if (tc_rot[1]) acc <= acc + (lts ^ {W{tc_rot[0]}}) + {{(W - 1) {1'b0}}, tc_rot[0]};
-                    lts <= lts >>> 1;
-                    it <= it + 5'd1;
-                    if (it == ITERS - 1) begin
-                        st <= ST_WR;
-                        ph <= 4'd0;
+                    rph <= ~rph;
+                    if (!rph) begin
+                        op_a <= as ^ {W{d_now}};              // d: lb - as, else lb + as
+                        op_b <= bs ^ {W{~d_now}};             // d: la + bs, else la - bs
+                        op_z <= atan_i ^ {ZW{~d_now}};        // d: + atan, else - atan
+                        op_zc <= ~d_now;
+                        op_d <= d_now;
+                        op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
+                        op_tc <= tc_rot[1] & tc_rot[0];
+                    end else begin
+                        la <= la + op_b + {{(W - 1) {1'b0}}, ~op_d};
+                        lb <= lb + op_a + {{(W - 1) {1'b0}}, op_d};
+                        {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
+                        lz_hi <= 1'b1;
+                        // the directions: the driver records them, followers replay them (a rotating register)
+                        drec <= {op_d, drec[ITERS-1:1]};
+                        acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
+                        lts <= lts >>> 1;
+                        it <= it + 5'd1;
+                        if (it == ITERS - 1) begin
+                            st <= ST_WR;
+                            ph <= 4'd0;
+                        end
                     end
                 end
                 ST_WR: begin
                     ph <= ph + 4'd1;
                     v_we <= run_role != 2'd2;   // the angle runs keep their vectors (M1.z stays cos theta1)
-                    if (ph == 4'd0 && tc_last[1]) acc <= acc + (lts ^ {W{tc_last[0]}}) + {{(W - 1) {1'b0}}, tc_last[0]};
+                    // the last gain term (shift ITERS) through the pair's operand register and the adder
+                    if (ph == 4'd0) begin
+                        op_t <= tc_last[1] ? (lts ^ {W{tc_last[0]}}) : {W{1'b0}};
+                        op_tc <= tc_last[1] & tc_last[0];
+                    end
+                    if (ph == 4'd1) acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
                     case (ph)
                         4'd0: begin
                             v_wa <= {run_vec, ca};
                             v_wd <= la;
-                            if (run == 5'd10 && exact_opp) v_wd <= {W{1'b0}};   // P3: exactly opposite: rho2 := 0
+                            if (run_p3n2 && exact_opp) v_wd <= {W{1'b0}};   // P3: exactly opposite: rho2 := 0
                         end
                         4'd1: begin
                             v_wa <= {run_vec, cb};
@@ -344,30 +422,34 @@ module spec_setup_engine #(
                         end
                         // after P2's P run: exactly opposite normals take P's (x, y) for N2's
                         4'd3: begin
-                            v_we <= (run == 5'd9) && exact_opp;
+                            v_we <= run_p2p && exact_opp;
                             v_wa <= {3'd1, 2'd0};
                             v_wd <= lb;
                         end
                         default: begin
-                            v_we <= (run == 5'd9) && exact_opp;
+                            v_we <= run_p2p && exact_opp;
                             v_wa <= {3'd1, 2'd1};
                             v_wd <= acc;
                         end
                     endcase
+                    // (acc before the last gain term, as before the two-clock micro-rotations)
+                    // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite? (the pair's and acc's tests of
+                    // phase 0, registered)
+                    if (ph == 4'd1 && run_p2n2) exact_opp <= la[W-1] && lb_small && acc_small;
                     if (ph == 4'd0) begin
-                        // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite?
-                        if (run == 5'd6) exact_opp <= la[W-1] && lb_small && acc_small;
-                        // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
-                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                         // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
-                        if (run == 5'd22) be_start <= 1'b1;
+                        if (run_gamma) be_start <= 1'b1;
                     end
+                    // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
+                    if (ph == 4'd1 && run_p3n2) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
-                        if (run == NRUN - 1) begin
+                        if (run_last) begin
                             st <= ST_BE;
                         end else begin
-                            run <= run + 5'd1;
+                            run <= run_nx;
+                            run_fields <= RUNS[run_nx*7 +: 7];
+                            run_tests <= tests_of(run_nx);
                             st <= ST_RD;
                         end
                     end
