@@ -113,7 +113,8 @@ module spec_setup_engine #(
     localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
     reg [2:0] st;
     reg [4:0] it;                         // micro-rotation
-    reg rph;                              // its clock: 0 operands, 1 sums
+    reg [1:0] rph;                        // its clock: 0 coarse shift, 1 fine shift, 2 sums
+    reg [1:0] qt;                         // quarter turns left before the micro-rotations
     wire [4:0] run_nx = (st == ST_LOAD) ? 5'd0 : run + 5'd1;   // the run that a run change loads
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
@@ -188,8 +189,17 @@ module spec_setup_engine #(
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
-    wire signed [W-1:0] as = la >>> it;
-    wire signed [W-1:0] bs = lb >>> it;
+    // The pair's shifter in two register stages (free-running; it and the sources hold through a
+    // micro-rotation): cs = src >>> (it & ~3), then op = (cs >>> it[1:0]) ^ x, where x folds the direction in
+    // (x - y = x + ~y + 1, the carry in is x too). The adders then see registers only: la <= la + op_b + xb,
+    // lb <= lb + op_a + xa. The loads and the turns go through the same lane with it = 0 and the pair cleared
+    // (a synchronous reset) before the sum: a load takes v_in as the source (sel_v*), a quarter turn
+    // (la, lb) <= (lb ^ xb + xb, la ^ xa + xa) with xa = d, xb = ~d, i.e. (lb, -la) for d = 1, (-lb, la) for d = 0.
+    reg sel_va, sel_vb;                   // the source is v_in (a load), else la / lb
+    reg op_xa, op_xb;
+    reg signed [W-1:0] cs_a, cs_b;
+    wire signed [W-1:0] fs_a = cs_a >>> it[1:0];   // (signed on its own: an XOR with x would make it logical)
+    wire signed [W-1:0] fs_b = cs_b >>> it[1:0];
     // The gain of the third coordinate (SetupModel::gain_mul: sum of sign * floor(t / 2^shift)) without a barrel
     // shifter: lts runs through t, t >>> 1, t >>> 2, ... (arithmetic shifts compose exactly), one step per
     // micro-rotation, and the term of shift i is added when it is one of the pass's terms. Shift -1 (t * 2) is
@@ -231,20 +241,20 @@ module spec_setup_engine #(
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
     wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
-    // registers beside the lane, each an adder's or a select's output (free-running): the word read, rounded to
-    // half for a halving run; the pair negated (the turn before the micro-rotations reads them a clock after the
-    // pair is loaded)
-    reg signed [W-1:0] v_in, la_neg, lb_neg;
-    always @(posedge clk) begin
-        v_in <= run_halve ? v_half : $signed(v_rd);
-        la_neg <= -la;
-        lb_neg <= -lb;
-    end
+    // the word read, rounded to half for a halving run (a free-running register)
+    reg signed [W-1:0] v_in;
+    always @(posedge clk) v_in <= run_halve ? v_half : $signed(v_rd);
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
     // the micro-rotation's operands (rph 0) and the third coordinate's gain term (or 0) with its carry in
     reg signed [W-1:0] op_a, op_b, op_t;
     reg signed [ZW-1:0] op_z;
     reg op_d, op_tc, op_zc;
+    always @(posedge clk) begin
+        cs_a <= (sel_va ? v_in : la) >>> {it[4:2], 2'b00};
+        cs_b <= (sel_vb ? v_in : lb) >>> {it[4:2], 2'b00};
+        op_a <= fs_a ^ {W{op_xa}};
+        op_b <= fs_b ^ {W{op_xb}};
+    end
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
     reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
@@ -331,69 +341,90 @@ module spec_setup_engine #(
                 ST_RD: begin
                     ph <= ph + 4'd1;
                     case (ph)
-                        4'd0: v_ra <= {run_vec, ca};
+                        4'd0: begin
+                            v_ra <= {run_vec, ca};
+                            it <= 5'd0;
+                            la <= {W{1'b0}};
+                            lb <= {W{1'b0}};
+                            lz <= {ZW{1'b0}};
+                            op_xa <= 1'b0;
+                            op_xb <= 1'b0;
+                        end
                         4'd1: v_ra <= {run_vec, cb};
-                        4'd2: v_ra <= {run_vec, ct};
-                        4'd3: la <= v_in;
-                        4'd4: lb <= v_in;
-                        // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
-                        // (and the angle runs' quarter turn of the angle lane: lz = 0 + op_z at phase 6)
+                        4'd2: begin
+                            v_ra <= {run_vec, ct};
+                            sel_vb <= 1'b1;             // a' (in v_in at phase 3) -> cs_b -> op_b -> la
+                        end
+                        4'd3: begin
+                            sel_vb <= 1'b0;
+                            sel_va <= 1'b1;             // b' (in v_in at phase 4) -> cs_a -> op_a -> lb
+                        end
+                        4'd4: sel_va <= 1'b0;
                         4'd5: begin
+                            la <= la + op_b + {{(W - 1) {1'b0}}, op_xb};
+                            // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
                             lts <= v_rd;
                             acc <= {W{1'b0}};
                             op_t <= tc_first[1] ? (($signed(v_rd) <<< 1) ^ {W{tc_first[0]}}) : {W{1'b0}};
                             op_tc <= tc_first[1] & tc_first[0];
-                            lz <= {ZW{1'b0}};
-                            op_z <= (run_role == 2'd2 && la[W-1]) ? (lb[W-1] ? -HALF_PI : HALF_PI) : {ZW{1'b0}};
-                            op_zc <= 1'b0;
+                        end
+                        4'd6: begin
+                            lb <= lb + op_a + {{(W - 1) {1'b0}}, op_xa};
+                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
                         end
                         default: begin
-                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
-                            {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
-                            lz_hi <= 1'b1;
-                            it <= 5'd0;
-                            rph <= 1'b0;
                             // the turn before the micro-rotations: by pi (frame passes; the driver decides,
-                            // followers replay), a quarter turn (angle runs)
-                            if (run_role == 2'd2) begin
-                                if (la[W-1]) begin
-                                    la <= lb[W-1] ? lb_neg : lb;
-                                    lb <= lb[W-1] ? la : la_neg;
-                                end
-                            end else if ((run_role == 2'd0) ? la[W-1] : neg) begin
-                                la <= la_neg;
-                                lb <= lb_neg;
-                            end
+                            // followers replay; two quarter turns), a quarter turn (angle runs, la < 0)
+                            if (run_role == 2'd2) qt <= la[W-1] ? 2'd1 : 2'd0;
+                            else qt <= ((run_role == 2'd0) ? la[W-1] : neg) ? 2'd2 : 2'd0;
                             if (run_role == 2'd0) neg <= la[W-1];
+                            rph <= 2'd0;
                             st <= ST_ROT;
                         end
                     endcase
                 end
-                // a micro-rotation in two clocks: rph 0 registers the operands (shifted, the direction folded in:
-                // x - y = x + ~y + 1; the gain term or 0), rph 1 adds them (an adder each, nothing in front)
+                // a micro-rotation in three clocks (rph): the coarse shift, the fine shift with the direction, the
+                // sums (an adder each with registers only in front); first the turns (qt) the same way
                 ST_ROT: begin
-                    rph <= ~rph;
-                    if (!rph) begin
-                        op_a <= as ^ {W{d_now}};              // d: lb - as, else lb + as
-                        op_b <= bs ^ {W{~d_now}};             // d: la + bs, else la - bs
-                        op_z <= atan_i ^ {ZW{~d_now}};        // d: + atan, else - atan
-                        op_zc <= ~d_now;
-                        op_d <= d_now;
-                        op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
-                        op_tc <= tc_rot[1] & tc_rot[0];
+                    rph <= (rph == 2'd2) ? 2'd0 : rph + 2'd1;
+                    if (rph == 2'd0) begin
+                        if (qt != 2'd0) begin
+                            // a quarter turn: the angle runs' by the sign of b (gamma / lambda's quarter), pi as two
+                            op_xa <= (run_role == 2'd2) ? ~lb[W-1] : 1'b1;
+                            op_xb <= (run_role == 2'd2) ? lb[W-1] : 1'b0;
+                            op_z <= (run_role == 2'd2) ? (lb[W-1] ? -HALF_PI : HALF_PI) : {ZW{1'b0}};
+                            op_zc <= 1'b0;
+                        end else begin
+                            op_xa <= d_now;                 // d: lb - as, else lb + as
+                            op_xb <= ~d_now;                // d: la + bs, else la - bs
+                            op_z <= atan_i ^ {ZW{~d_now}};  // d: + atan, else - atan
+                            op_zc <= ~d_now;
+                            op_d <= d_now;
+                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
+                            op_tc <= tc_rot[1] & tc_rot[0];
+                        end
+                    end else if (rph == 2'd1) begin
+                        if (qt != 2'd0) begin
+                            la <= {W{1'b0}};
+                            lb <= {W{1'b0}};
+                        end
                     end else begin
-                        la <= la + op_b + {{(W - 1) {1'b0}}, ~op_d};
-                        lb <= lb + op_a + {{(W - 1) {1'b0}}, op_d};
+                        la <= la + op_b + {{(W - 1) {1'b0}}, op_xb};
+                        lb <= lb + op_a + {{(W - 1) {1'b0}}, op_xa};
                         {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
                         lz_hi <= 1'b1;
-                        // the directions: the driver records them, followers replay them (a rotating register)
-                        drec <= {op_d, drec[ITERS-1:1]};
-                        acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
-                        lts <= lts >>> 1;
-                        it <= it + 5'd1;
-                        if (it == ITERS - 1) begin
-                            st <= ST_WR;
-                            ph <= 4'd0;
+                        if (qt != 2'd0) begin
+                            qt <= qt - 2'd1;
+                        end else begin
+                            // the directions: the driver records them, followers replay them (a rotating register)
+                            drec <= {op_d, drec[ITERS-1:1]};
+                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
+                            lts <= lts >>> 1;
+                            it <= it + 5'd1;
+                            if (it == ITERS - 1) begin
+                                st <= ST_WR;
+                                ph <= 4'd0;
+                            end
                         end
                     end
                 end
