@@ -275,8 +275,10 @@ module spec_setup_backend #(
     wire [PW-PL-1:0] sum_hi = oa[PW-1:PL] + ob[PW-1:PL] + {{(PW - PL - 1) {1'b0}}, sum_cy};
     wire [PW-1:0] sum = {sum_hi, sum_lo};
     wire neg = sum[PW-1];
-    wire fast = c_act == X_IDLE || c_act == X_NORM || c_act == X_SHIFT || c_act == X_OUT;
-    wire stp = fast || bph == 2'd2;
+    // the step's kind, registers loaded with c_act (one-clock steps; the actions that may hold the program),
+    // and the ALU step's last clock (ph2 = bph is 2)
+    reg a_fast, a_idle, a_div, a_norm, a_shift, a_out, ph2;
+    wire stp = a_fast || ph2;
     reg cond;
     always @* begin
         case (c_cd)
@@ -301,18 +303,35 @@ module spec_setup_backend #(
     wire div_done = dcnt == ZW[5:0];
 
     // ---- control -------------------------------------------------------------------------------------------------
-    wire c1_pos = !c1[W-1] && c1 != {W{1'b0}};
+    // registers (free-running) of the inputs' tests and of the output words: c1 and mag hold from the angles on,
+    // the output words' inputs from the output step on, which waits a clock for them (out_rdy)
+    reg c1_pos, mag_pos, out_rdy;
+    reg [C_W-1:0] c_out;
+    reg [6:0] f_out;
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
     wire zero_c = s_bad || nohl || (s_str == {STR_W{1'b0}}) || ((s_n != {N_W{1'b0}}) && !xpos);
-    wire norm_more = !lgx[F+1] && lg_e != 6'd0;
-    wire hold = (c_act == X_IDLE && !start) || (c_act == X_DIV && !lam_ok) || (c_act == X_NORM && norm_more) ||
-                (c_act == X_SHIFT && sc != 6'd0) ||
-                (c_act == X_OUT && !(m_tvalid && m_tready));
+    reg lge_nz, sc_nz, lam_q;               // lg_e != 0, sc != 0 (registers kept with them); lam_ok a clock later
+    wire norm_more = !lgx[F+1] && lge_nz;
+    wire hold = (a_idle && !start) || (a_div && !lam_q) || (a_norm && norm_more) || (a_shift && sc_nz) ||
+                (a_out && !(m_tvalid && m_tready));
     wire adv = stp && !hold;                // the program moves on (to pc1, or to 0 after the output step)
-    wire wrap = c_act == X_OUT;
+    wire wrap = a_out;
+    function [5:0] kind_of(input [3:0] act);   // {fast, idle, div, norm, shift, out}
+        kind_of = {act == X_IDLE || act == X_NORM || act == X_SHIFT || act == X_OUT, act == X_IDLE, act == X_DIV,
+                   act == X_NORM, act == X_SHIFT, act == X_OUT};
+    endfunction
     wire [6:0] pc_next = wrap ? 7'd0 : pc1;
     wire [PW-LF-1:0] p_i = acc[PW-1:LF];
+    wire [5:0] sc_init = EF - C_W - 1 + {1'b0, p_i[4:0]};
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
+    always @(posedge clk) begin
+        c1_pos <= !c1[W-1] && c1 != {W{1'b0}};
+        mag_pos <= !mag[W-1] && mag != {W{1'b0}};
+        out_rdy <= c_act == X_OUT;
+        c_out <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
+        f_out <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
+                       : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
+    end
     assign m_n = s_n;
     assign m_l = s_l;
     assign m_dzeta = dnq[ANG_W-1:0];
@@ -324,7 +343,7 @@ module spec_setup_backend #(
     // (the steps after the one-clock steps read no word; the output step's word stays in rd); a step's write
     // takes ACC before the step (ACC holds through the step's clocks)
     reg [3:0] ra_q;
-    assign rf_ra = (bph == 2'd2 && !fast) ? ra_of(pc1, flat) : ra_q;
+    assign rf_ra = ph2 ? ra_of(pc1, flat) : ra_q;
     // write and read in separate processes: a word is read at the earliest two steps after its write, so no
     // read-during-write relation is needed (and none is built)
     always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
@@ -333,11 +352,14 @@ module spec_setup_backend #(
     always @(posedge clk) begin
         done <= 1'b0;
         ra_q <= rf_ra;
+        lam_q <= lam_ok;
         if (rst) begin
             pc1 <= 7'd1;
             bph <= 2'd0;
+            ph2 <= 1'b0;
             {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
                 {A_ACC, 1'b0, 1'b0, 1'b0, B_ZERO, 1'b0, C_NO, FL_NO, 1'b0, R_Z0, X_IDLE};
+            {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(X_IDLE);
             nb <= 1'b0;
             tsel_exp <= 1'b0;
             m_tvalid <= 1'b0;
@@ -345,14 +367,18 @@ module spec_setup_backend #(
         end else begin
             if (m_tvalid && m_tready) m_tvalid <= 1'b0;
             bph <= stp ? 2'd0 : bph + 2'd1;
+            ph2 <= !stp && bph == 2'd1;
             if (adv) begin
                 pc1 <= pc_next + 7'd1;
-                if (wrap)
+                if (wrap) begin
                     {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
                         {A_ACC, 1'b0, 1'b0, 1'b0, B_ZERO, 1'b0, C_NO, FL_NO, 1'b0, R_Z0, X_IDLE};
-                else
+                    {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(X_IDLE);
+                end else begin
                     {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
                         {t_a, t_ia, t_ib, t_ci, t_b, t_g, t_cd, t_fl, t_rw, t_wa, t_act};
+                    {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(t_act);
+                end
                 nb <= s_n[hidx[3:0]];
                 tsel_exp <= !wrap && pc1 >= P_EXP;
             end
@@ -372,12 +398,14 @@ module spec_setup_backend #(
                 X_LGX, X_LGS: begin
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
-                    if (c_act == X_LGX) xpos <= flat ? c1_pos : (!mag[W-1] && mag != {W{1'b0}});
+                    lge_nz <= 1'b1;
+                    if (c_act == X_LGX) xpos <= flat ? c1_pos : mag_pos;
                 end
                 X_NORM: begin
                     if (norm_more) begin
                         lgx <= {lgx[F:0], 1'b0};
                         lg_e <= lg_e - 6'd1;
+                        lge_nz <= lg_e != 6'd1;
                     end
                 end
                 X_TABL: begin
@@ -388,7 +416,8 @@ module spec_setup_backend #(
                     tab_a <= acc[LF-1 -: TB];
                     tr <= acc[LF-TB-1 -: RB];
                     big <= p_i > C_W + 1;
-                    sc <= EF - C_W - 1 + {1'b0, p_i[4:0]};
+                    sc <= sc_init;
+                    sc_nz <= sc_init != 6'd0;
                 end
                 // w0 = word j, read while this step's three clocks run (the address is word j + 1 afterwards)
                 X_TAB1: begin
@@ -400,22 +429,23 @@ module spec_setup_backend #(
                     if (sc != 6'd0) begin
                         acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
                         sc <= sc - 6'd1;
+                        sc_nz <= sc != 6'd1;
                     end
                 end
                 X_OUT: begin
                     if (m_tvalid && m_tready) done <= 1'b1;
-                    if (div_done && !m_tvalid && !done) begin
+                    if (div_done && out_rdy && !m_tvalid && !done) begin
                         m_tvalid <= 1'b1;
                         if (s_bad || flat) dnq <= {ZW{1'b0}};
-                        m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
-                        m_flags <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
-                                         : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
+                        m_c <= c_out;
+                        m_flags <= f_out;
                     end
                 end
                 default: ;
             endcase
-            // the divider: started by step X_DIV with the numerator in ACC, then runs beside the program
-            if (c_act == X_DIV && adv) begin
+            // the divider: started by step X_DIV with the numerator in ACC (in its first clock, again while the
+            // step waits for lambda), then runs beside the program
+            if (a_div && bph == 2'd0) begin
                 drem <= {DW{1'b0}};
                 dnq <= acc[ZW-1:0];
                 dcnt <= 6'd0;
