@@ -170,10 +170,16 @@ module spec_setup_engine #(
     // k = y: (-nz, 0, nx); k = z: (ny, -nx, 0), from N1's prescaled words (the same shift): component c is 0
     // for c = k, else the remaining axis 3 - k - c of N1, negated for c = k + 2 (mod 3)
     reg [1:0] pk;
-    wire [1:0] p_c = ph[1:0] - 2'd2;      // the component written at phase ph (2..4)
+    wire [1:0] p_c = ph[1:0] - 2'd3;      // the component written at phase ph (3..5)
     wire [1:0] p_src = 2'd3 - pk - ph[1:0];   // the axis read at phase ph (0..2)
     wire p_neg = p_c == ((pk == 2'd0) ? 2'd2 : pk - 2'd1);
-    wire signed [W-1:0] v_neg = -$signed(v_rd);
+    // the words of the load, registers: a prescaled input component (ld_word a clock after vec_in holds the
+    // component: vec_in shifts a clock ahead of the writes), N1's word read and negated (with v_in) for P
+    reg signed [W-1:0] ld_wq, v_neg;
+    always @(posedge clk) begin
+        ld_wq <= ld_word;
+        v_neg <= -$signed(v_rd);
+    end
     localparam [5:0] VM1 = VEC_W - 1;
     wire [5:0] sh_var = VM1 - lead;       // 0 .. VEC_W - 1
     wire unused_sh = &{1'b0, sh_var};
@@ -278,6 +284,7 @@ module spec_setup_engine #(
                     if (s_tvalid && s_tready) begin
                         s_tready <= 1'b0;
                         vec_in <= s_vec;
+                        run_fields <= RUNS[6:0];   // run 0 (not halving) while the load reads P's words by v_in
                         s_reg <= s_str;
                         n_reg <= s_n;
                         l_reg <= s_l;
@@ -292,33 +299,39 @@ module spec_setup_engine #(
                 // write the prescaled vectors (and P, and M1 = (0, 0, U)) into the vector memory
                 ST_LOAD: begin
                     if (ld_v == 3'd4) begin
-                        // P: read N1's words at phases 0..2, write P's at 2..4 (the read takes two clocks)
+                        // P: read N1's words at phases 0..2, write P's at 3..5 (the read and v_in / v_neg take
+                        // three clocks; v_in is the word itself: run_fields are run 0's, not halving)
                         ph <= ph + 4'd1;
                         if (ph < 4'd3) v_ra <= {3'd0, p_src};
-                        if (ph >= 4'd2) begin
+                        if (ph >= 4'd3) begin
                             v_we <= 1'b1;
                             v_wa <= {3'd4, p_c};
-                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_rd;
+                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_in;
                         end
-                        if (ph == 4'd4) begin
+                        if (ph == 4'd5) begin
                             ph <= 4'd0;
                             ld_v <= 3'd5;
                         end
                     end else if (ld_c == 2'd0) begin
                         // the vector's shift (input vectors) from its components' leading one
+                        // (phase 3: the shift; phase 4: ld_wq holds the x word, vec_in moves on to y)
                         ph <= ph + 4'd1;
                         if (ph == 4'd3) begin
-                            ph <= 4'd0;
                             ld_sh <= sh_q;
                             if (ld_v == 3'd0) pk <= pk_q;
                             if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
+                        end
+                        if (ph == 4'd4) begin
+                            ph <= 4'd0;
+                            if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
                             ld_c <= 2'd1;
                         end
                     end else begin
                         v_we <= 1'b1;
                         v_wa <= {ld_v, ld_c - 2'd1};
-                        v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_word;
-                        if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};   // the next component
+                        v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_wq;
+                        // the next component (three shifts a vector: at phase 4 and here for x and y)
+                        if (ld_v < 3'd4 && ld_c != 2'd3) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
                         if (ld_c == 2'd3) begin
                             ld_c <= 2'd0;
                             ld_v <= ld_v + 3'd1;
