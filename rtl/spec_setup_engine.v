@@ -203,6 +203,7 @@ module spec_setup_engine #(
     // (la, lb) <= (lb ^ xb + xb, la ^ xa + xa) with xa = d, xb = ~d, i.e. (lb, -la) for d = 1, (-lb, la) for d = 0.
     reg sel_va, sel_vb;                   // the source is v_in (a load), else la / lb
     reg op_xa, op_xb;
+    reg ci_la, ci_lb;                     // the carries into la's and lb's adders (x, or the rounding bit)
     reg signed [W-1:0] cs_a, cs_b;
     wire signed [W-1:0] fs_a = cs_a >>> it[1:0];   // (signed on its own: an XOR with x would make it logical)
     wire signed [W-1:0] fs_b = cs_b >>> it[1:0];
@@ -246,10 +247,16 @@ module spec_setup_engine #(
     reg [3:0] ph;                         // phase within a state
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
-    wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
+    // a coordinate rounded to half, (v + 1) >>> 1 = (v >>> 1) + v[0]: the shift here, the bit (v_rnd) is the
+    // carry into the pair's adder as the word is loaded
+    wire signed [W-1:0] v_half = $signed(v_rd) >>> 1;
     // the word read, rounded to half for a halving run (a free-running register)
     reg signed [W-1:0] v_in;
-    always @(posedge clk) v_in <= run_halve ? v_half : $signed(v_rd);
+    reg v_rnd;
+    always @(posedge clk) begin
+        v_in <= run_halve ? v_half : $signed(v_rd);
+        v_rnd <= run_halve & v_rd[0];
+    end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
     // the micro-rotation's operands (rph 0) and the third coordinate's gain term (or 0) with its carry in
     reg signed [W-1:0] op_a, op_b, op_t;
@@ -371,10 +378,14 @@ module spec_setup_engine #(
                         4'd3: begin
                             sel_vb <= 1'b0;
                             sel_va <= 1'b1;             // b' (in v_in at phase 4) -> cs_a -> op_a -> lb
+                            ci_la <= v_rnd;
                         end
-                        4'd4: sel_va <= 1'b0;
+                        4'd4: begin
+                            sel_va <= 1'b0;
+                            ci_lb <= v_rnd;
+                        end
                         4'd5: begin
-                            la <= la + op_b + {{(W - 1) {1'b0}}, op_xb};
+                            la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
                             // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
                             lts <= v_rd;
                             acc <= {W{1'b0}};
@@ -382,7 +393,7 @@ module spec_setup_engine #(
                             op_tc <= tc_first[1] & tc_first[0];
                         end
                         4'd6: begin
-                            lb <= lb + op_a + {{(W - 1) {1'b0}}, op_xa};
+                            lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
                             acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
                         end
                         default: begin
@@ -405,11 +416,15 @@ module spec_setup_engine #(
                             // a quarter turn: the angle runs' by the sign of b (gamma / lambda's quarter), pi as two
                             op_xa <= (run_role == 2'd2) ? ~lb[W-1] : 1'b1;
                             op_xb <= (run_role == 2'd2) ? lb[W-1] : 1'b0;
+                            ci_lb <= (run_role == 2'd2) ? ~lb[W-1] : 1'b1;
+                            ci_la <= (run_role == 2'd2) ? lb[W-1] : 1'b0;
                             op_z <= (run_role == 2'd2) ? (lb[W-1] ? -HALF_PI : HALF_PI) : {ZW{1'b0}};
                             op_zc <= 1'b0;
                         end else begin
                             op_xa <= d_now;                 // d: lb - as, else lb + as
                             op_xb <= ~d_now;                // d: la + bs, else la - bs
+                            ci_lb <= d_now;
+                            ci_la <= ~d_now;
                             op_z <= atan_i ^ {ZW{~d_now}};  // d: + atan, else - atan
                             op_zc <= ~d_now;
                             op_d <= d_now;
@@ -422,8 +437,8 @@ module spec_setup_engine #(
                             lb <= {W{1'b0}};
                         end
                     end else begin
-                        la <= la + op_b + {{(W - 1) {1'b0}}, op_xb};
-                        lb <= lb + op_a + {{(W - 1) {1'b0}}, op_xa};
+                        la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
+                        lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
                         {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
                         lz_hi <= 1'b1;
                         if (qt != 2'd0) begin
