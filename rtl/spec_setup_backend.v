@@ -300,7 +300,7 @@ module spec_setup_backend #(
     wire [DW:0] dsh = {drem, dnq[ZW-1]};
     wire [DW+1:0] ddif = {1'b0, dsh} - {2'b00, s_l, {S{1'b0}}};
     wire dge = !ddif[DW+1];
-    wire div_done = dcnt == ZW[5:0];
+    reg div_done;                           // dcnt == ZW (a register kept with dcnt)
 
     // ---- control -------------------------------------------------------------------------------------------------
     // registers (free-running) of the inputs' tests and of the output words: c1 and mag hold from the angles on,
@@ -364,6 +364,7 @@ module spec_setup_backend #(
             tsel_exp <= 1'b0;
             m_tvalid <= 1'b0;
             dcnt <= ZW[5:0];
+            div_done <= 1'b1;
         end else begin
             if (m_tvalid && m_tready) m_tvalid <= 1'b0;
             bph <= stp ? 2'd0 : bph + 2'd1;
@@ -436,7 +437,6 @@ module spec_setup_backend #(
                     if (m_tvalid && m_tready) done <= 1'b1;
                     if (div_done && out_rdy && !m_tvalid && !done) begin
                         m_tvalid <= 1'b1;
-                        if (s_bad || flat) dnq <= {ZW{1'b0}};
                         m_c <= c_out;
                         m_flags <= f_out;
                     end
@@ -446,13 +446,16 @@ module spec_setup_backend #(
             // the divider: started by step X_DIV with the numerator in ACC (in its first clock, again while the
             // step waits for lambda), then runs beside the program
             if (a_div && bph == 2'd0) begin
+                // a zero vector or a flat span: dzeta = 0, no division
                 drem <= {DW{1'b0}};
-                dnq <= acc[ZW-1:0];
-                dcnt <= 6'd0;
+                dnq <= (s_bad || flat) ? {ZW{1'b0}} : acc[ZW-1:0];
+                dcnt <= (s_bad || flat) ? ZW[5:0] : 6'd0;
+                div_done <= s_bad || flat;
             end else if (!div_done) begin
                 drem <= dge ? ddif[DW-1:0] : dsh[DW-1:0];
                 dnq <= {dnq[ZW-2:0], dge};
                 dcnt <= dcnt + 6'd1;
+                div_done <= dcnt == ZW[5:0] - 6'd1;
             end
         end
     end
