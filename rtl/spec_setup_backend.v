@@ -12,6 +12,11 @@
 // Beside the ALU: a log2 normalizer (a shift left a clock), the log2 / exp2 tables, a multiplier (a DSP) for
 // their interpolation, a restoring divider for dzeta (one subtractor, running beside the program).
 //
+// Timing (issue 13, docs/setup.md): the step's control word is a register loaded from the table one step
+// ahead; an ALU step takes three clocks (operands into registers, low half, high half with the registered
+// carry), the steps without the ALU one; the hold conditions, the divider's state and the output words are
+// registers.
+//
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
 // registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 the register file's read
 // register holding word R_ZETA): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that

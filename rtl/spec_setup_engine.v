@@ -6,10 +6,16 @@
 // (SetupModel::run).
 //
 // A pass with k lanes is k runs of the lane: the driving vector first (its micro-rotation directions are
-// recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector
-// (3 clocks, + 1 for the memory), ITERS micro-rotations with the gain terms of t added beside them, write
-// a, b, t back (3 clocks; not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below.
-// The back end starts when gamma is in the angle lane and takes lambda when the last run is done.
+// recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector and
+// load them (8 clocks), the turn before the micro-rotations if any (3 clocks a quarter turn), ITERS
+// micro-rotations with the gain terms of t added beside them (3 clocks each), write a, b, t back (5 clocks;
+// not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below. The back end starts when
+// gamma is in the angle lane and takes lambda when the last run is done.
+//
+// Timing (issue 13, docs/setup.md): every adder of the lane has registers only in front (the run's fields, the
+// shifted and direction-folded operands, the gain term, the loads and turns through the same operand
+// registers and a synchronous clear of the pair), the angle lane's adder is split in halves with a registered
+// carry, and the load's shift, tests and words are registered, at the price of clocks per span.
 //
 // Handshake: s_tready is 1 while idle (a register); m_tvalid and the output fields are registers and hold until
 // m_tready; the next span is taken once the descriptor has been handed over. rst: back to idle, output empty.
