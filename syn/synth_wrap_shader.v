@@ -42,7 +42,7 @@ module synth_wrap_shader #(
             pair_of = 0;
             for (i = 0; i < NS; i = i + 1)
                 for (j = i + 1; j < NS; j = j + 1) begin
-                    if (n == k) pair_of = second ? j : i;
+                    if (n == k) pair_of = (second != 0) ? j : i;
                     n = n + 1;
                 end
         end
