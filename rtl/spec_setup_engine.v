@@ -153,7 +153,7 @@ module spec_setup_engine #(
     reg [SHB-1:0] ld_sh;                  // the variable part of the shift of the vector being loaded
     wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
     // the vector's shift, P's axis and the zero test through three free-running registers (magnitudes; their OR
-    // and P's axis; the shift): the vector's first load clock (ld_c = 0) waits for them (ph 0..3)
+    // and P's axis; the shift): the vector's first load clock (ld_c = 0) waits for them (ph 0..4)
     reg [VEC_W-1:0] mx, my, mz, mor;       // mor: its leading one is the largest magnitude's
     reg [1:0] pk_q;
     reg [SHB-1:0] sh_q;
@@ -203,8 +203,8 @@ module spec_setup_engine #(
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
     // The pair's shifter in two register stages (free-running; it and the sources hold through a
     // micro-rotation): cs = src >>> (it & ~3), then op = (cs >>> it[1:0]) ^ x, where x folds the direction in
-    // (x - y = x + ~y + 1, the carry in is x too). The adders then see registers only: la <= la + op_b + xb,
-    // lb <= lb + op_a + xa. The loads and the turns go through the same lane with it = 0 and the pair cleared
+    // (x - y = x + ~y + 1, the carry in ci is x too). The adders then see registers only: la <= la + op_b + ci_la,
+    // lb <= lb + op_a + ci_lb. The loads and the turns go through the same lane with it = 0 and the pair cleared
     // (a synchronous reset) before the sum: a load takes v_in as the source (sel_v*), a quarter turn
     // (la, lb) <= (lb ^ xb + xb, la ^ xa + xa) with xa = d, xb = ~d, i.e. (lb, -la) for d = 1, (-lb, la) for d = 0.
     reg sel_va, sel_vb;                   // the source is v_in (a load), else la / lb
@@ -264,7 +264,8 @@ module spec_setup_engine #(
         v_rnd <= run_halve & v_rd[0];
     end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
-    // the micro-rotation's operands (rph 0) and the third coordinate's gain term (or 0) with its carry in
+    // the pair's operands (shifter stages, free-running) and, set at rph 0, the third coordinate's gain term (or
+    // 0) with its carry in and the angle lane's operand
     reg signed [W-1:0] op_a, op_b, op_t;
     reg signed [ZW-1:0] op_z;
     reg op_d, op_tc, op_zc;
