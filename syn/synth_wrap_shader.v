@@ -5,8 +5,7 @@
 // The beat is lean (the small shader fills the UP5K): its BW bits are the XORs of distinct pairs of NS shifted
 // bits (NS (NS - 1) / 2 >= BW), one LUT each that packs into the logic cell of the shader's register taking
 // the bit, instead of BW flip-flops. Every beat bit is a different function of the pins' registers, and the
-// shader registers every beat bit it uses before any arithmetic, so no shader logic can be simplified away
-// (the yosys cell counts of the shader itself are those with a BW-bit shift register).
+// shader registers every beat bit it uses before any arithmetic, so no shader logic can be simplified away.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
