@@ -12,6 +12,11 @@
 // Beside the ALU: a log2 normalizer (a shift left a clock), the log2 / exp2 tables, a multiplier (a DSP) for
 // their interpolation, a restoring divider for dzeta (one subtractor, running beside the program).
 //
+// Timing (issue 13, docs/setup.md): the step's control word is a register loaded from the table one step
+// ahead; an ALU step takes three clocks (operands into registers, low half, high half with the registered
+// carry), the steps without the ALU one; the hold conditions, the divider's state and the output words are
+// registers.
+//
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
 // registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 the register file's read
 // register holding word R_ZETA): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
@@ -102,80 +107,86 @@ module spec_setup_backend #(
                      X_TABE = 4'd6, X_TAB1 = 4'd7, X_W0 = 4'd8, X_SHIFT = 4'd9, X_OUT = 4'd10, X_IDLE = 4'd11;
     // program counters of the steps that the logic below refers to
     localparam [6:0] P_LOG_X = 7'd17, P_LOG_S = 7'd33, P_HORNER = 7'd46, P_EXP = 7'd57, P_OUT = 7'd68;
-    reg [6:0] pc;
+    // The step's control word c_* is a register, loaded from the table at pc1 (the program counter plus one, the
+    // only program counter kept) when the program advances, so no adder sees counter -> table -> select.
+    reg [6:0] pc1;
     reg [1:0] c_a;
     reg c_ia, c_ib, c_ci, c_g, c_rw;
     reg [3:0] c_b, c_wa, c_act;
     reg [2:0] c_cd, c_fl;
+    reg [1:0] t_a;
+    reg t_ia, t_ib, t_ci, t_g, t_rw;
+    reg [3:0] t_b, t_wa, t_act;
+    reg [2:0] t_cd, t_fl;
     always @* begin
-        c_a = A_ACC;
-        c_ia = 1'b0;
-        c_ib = 1'b0;
-        c_ci = 1'b0;
-        c_b = B_ZERO;
-        c_g = 1'b0;
-        c_cd = C_NO;
-        c_fl = FL_NO;
-        c_rw = 1'b0;
-        c_wa = R_Z0;
-        c_act = X_NONE;
+        t_a = A_ACC;
+        t_ia = 1'b0;
+        t_ib = 1'b0;
+        t_ci = 1'b0;
+        t_b = B_ZERO;
+        t_g = 1'b0;
+        t_cd = C_NO;
+        t_fl = FL_NO;
+        t_rw = 1'b0;
+        t_wa = R_Z0;
+        t_act = X_NONE;
         // one case over the program counter (a ROM): the two log2 lookups (ten steps after P_LOG_X and after
         // P_LOG_S, alike but for zeta0's zeroing in the second), the multiplication n * la_v (N_W steps from
         // P_HORNER, from n's top bit), the other steps
-        case (pc)
-            7'd0: c_act = X_IDLE;
-            7'd1: begin c_a = A_ZERO; c_b = B_LZ; c_cd = C_ALL; end                          // gamma
-            7'd2: begin c_b = B_LSH; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_GAM; end            // + l 2^(S-1)
-            7'd3: begin c_a = A_ZERO; c_b = B_LZ; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; c_act = X_DIV; end  // -lambda
-            7'd4: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end  // gamma
-            7'd5: begin c_a = A_SHR; c_cd = C_ALL; end                                       // gamma >>> 1
-            7'd6: begin c_b = B_RF; c_cd = C_ALL; end                                        // mid = z0 + gamma/2
-            7'd7: begin c_b = B_RF; c_ib = 1'b1; c_fl = FL_HI; end                           // mid > pi
-            7'd8: begin c_b = B_RF; c_fl = FL_LO; end                                        // mid < -pi
-            7'd9: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                          // z0
-            7'd10: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_HI; end              // - 2 pi
-            7'd11: begin c_b = B_RF; c_cd = C_LO; end                                        // + 2 pi
-            7'd12: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_fl = FL_A; end              // z0 >= pi/2
-            7'd13: begin c_b = B_RF; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_Z0; end             // z0 + gamma
-            7'd14: begin c_b = B_RF; c_fl = FL_B; end                                        // <= -pi/2
-            7'd15: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_ALL; end                         // z0
-            7'd16: begin c_b = B_RF; c_cd = C_ALL; end                                       // + 2^(S-1)
-            P_LOG_X: begin c_rw = 1'b1; c_wa = R_ZETA; c_act = X_LGX; end                    // log2 x
-            P_LOG_X + 7'd1, P_LOG_S + 7'd1: c_act = X_NORM;                                  // normalize
-            P_LOG_X + 7'd2: c_act = X_TABL;                                                  // word j
-            P_LOG_S + 7'd2: begin c_act = X_TABL; c_a = A_ZERO; c_cd = C_ALL; end            // (zeta0: 0
-            P_LOG_X + 7'd3: c_act = X_TAB1;                                                  // word j + 1
-            P_LOG_S + 7'd3: begin c_act = X_TAB1; c_a = A_ZERO; c_b = B_RF; c_cd = C_ZETA; end   // or kept)
-            P_LOG_X + 7'd4: c_act = X_W0;                                                    // w0 = word j
-            P_LOG_S + 7'd4: begin c_act = X_W0; c_rw = 1'b1; c_wa = R_ZETA; end
-            P_LOG_X + 7'd5, P_LOG_S + 7'd5: begin c_a = A_ZERO; c_b = B_TABW; c_cd = C_ALL; end   // word j + 1
-            P_LOG_X + 7'd6, P_LOG_S + 7'd6: begin c_b = B_W0; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end  // tdiff
-            P_LOG_X + 7'd8, P_LOG_S + 7'd8: begin c_a = A_ZERO; c_b = B_TPH; c_ci = 1'b1; c_cd = C_ALL; end  // (p >> RB-1) + 1
-            P_LOG_X + 7'd9, P_LOG_S + 7'd9: begin c_a = A_SHR; c_b = B_W0; c_cd = C_ALL; end  // w0 + round(p / 2^RB)
-            P_LOG_X + 7'd10, P_LOG_S + 7'd10: begin c_b = B_ELF; c_cd = C_ALL; end            // + e 2^LF: log2
-            7'd28: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_cd = C_ALL; end             // la = off - log2 x
-            7'd29: c_fl = FL_NEG;                                                            // la < 0
-            7'd30: begin c_ia = 1'b1; c_b = B_RF; c_ci = 1'b1; c_fl = FL_BIG; end            // la > LA_MAX
-            7'd31: begin c_a = A_ZERO; c_b = B_RF; c_cd = C_BIG; end
-            7'd32: begin c_a = A_ZERO; c_cd = C_ZLA; end
-            P_LOG_S: begin c_rw = 1'b1; c_wa = R_LAV; c_act = X_LGS; end                     // log2 Is
-            7'd44: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end             // lis = log2 Is - frac
-            7'd45: begin c_a = A_ZERO; c_cd = C_ALL; c_rw = 1'b1; c_wa = R_LIS; end
+        case (pc1)
+            7'd0: t_act = X_IDLE;
+            7'd1: begin t_a = A_ZERO; t_b = B_LZ; t_cd = C_ALL; end                          // gamma
+            7'd2: begin t_b = B_LSH; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_GAM; end            // + l 2^(S-1)
+            7'd3: begin t_a = A_ZERO; t_b = B_LZ; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; t_act = X_DIV; end  // -lambda
+            7'd4: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_Z0; end  // gamma
+            7'd5: begin t_a = A_SHR; t_cd = C_ALL; end                                       // gamma >>> 1
+            7'd6: begin t_b = B_RF; t_cd = C_ALL; end                                        // mid = z0 + gamma/2
+            7'd7: begin t_b = B_RF; t_ib = 1'b1; t_fl = FL_HI; end                           // mid > pi
+            7'd8: begin t_b = B_RF; t_fl = FL_LO; end                                        // mid < -pi
+            7'd9: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_ALL; end                          // z0
+            7'd10: begin t_b = B_RF; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_HI; end              // - 2 pi
+            7'd11: begin t_b = B_RF; t_cd = C_LO; end                                        // + 2 pi
+            7'd12: begin t_b = B_RF; t_ib = 1'b1; t_ci = 1'b1; t_fl = FL_A; end              // z0 >= pi/2
+            7'd13: begin t_b = B_RF; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_Z0; end             // z0 + gamma
+            7'd14: begin t_b = B_RF; t_fl = FL_B; end                                        // <= -pi/2
+            7'd15: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_ALL; end                         // z0
+            7'd16: begin t_b = B_RF; t_cd = C_ALL; end                                       // + 2^(S-1)
+            P_LOG_X: begin t_rw = 1'b1; t_wa = R_ZETA; t_act = X_LGX; end                    // log2 x
+            P_LOG_X + 7'd1, P_LOG_S + 7'd1: t_act = X_NORM;                                  // normalize
+            P_LOG_X + 7'd2: t_act = X_TABL;                                                  // word j
+            P_LOG_S + 7'd2: begin t_act = X_TABL; t_a = A_ZERO; t_cd = C_ALL; end            // (zeta0: 0
+            P_LOG_X + 7'd3: t_act = X_TAB1;                                                  // word j + 1
+            P_LOG_S + 7'd3: begin t_act = X_TAB1; t_a = A_ZERO; t_b = B_RF; t_cd = C_ZETA; end   // or kept)
+            P_LOG_X + 7'd4: t_act = X_W0;                                                    // w0 = word j
+            P_LOG_S + 7'd4: begin t_act = X_W0; t_rw = 1'b1; t_wa = R_ZETA; end
+            P_LOG_X + 7'd5, P_LOG_S + 7'd5: begin t_a = A_ZERO; t_b = B_TABW; t_cd = C_ALL; end   // word j + 1
+            P_LOG_X + 7'd6, P_LOG_S + 7'd6: begin t_b = B_W0; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; end  // tdiff
+            P_LOG_X + 7'd8, P_LOG_S + 7'd8: begin t_a = A_ZERO; t_b = B_TPH; t_ci = 1'b1; t_cd = C_ALL; end  // (p >> RB-1) + 1
+            P_LOG_X + 7'd9, P_LOG_S + 7'd9: begin t_a = A_SHR; t_b = B_W0; t_cd = C_ALL; end  // w0 + round(p / 2^RB)
+            P_LOG_X + 7'd10, P_LOG_S + 7'd10: begin t_b = B_ELF; t_cd = C_ALL; end            // + e 2^LF: log2
+            7'd28: begin t_ia = 1'b1; t_b = B_RF; t_ci = 1'b1; t_cd = C_ALL; end             // la = off - log2 x
+            7'd29: t_fl = FL_NEG;                                                            // la < 0
+            7'd30: begin t_ia = 1'b1; t_b = B_RF; t_ci = 1'b1; t_fl = FL_BIG; end            // la > LA_MAX
+            7'd31: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_BIG; end
+            7'd32: begin t_a = A_ZERO; t_cd = C_ZLA; end
+            P_LOG_S: begin t_rw = 1'b1; t_wa = R_LAV; t_act = X_LGS; end                     // log2 Is
+            7'd44: begin t_b = B_RF; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; end             // lis = log2 Is - frac
+            7'd45: begin t_a = A_ZERO; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_LIS; end
             P_HORNER, P_HORNER + 7'd1, P_HORNER + 7'd2, P_HORNER + 7'd3, P_HORNER + 7'd4, P_HORNER + 7'd5,
             P_HORNER + 7'd6, P_HORNER + 7'd7, P_HORNER + 7'd8, P_HORNER + 7'd9:
-                begin c_a = A_SHL; c_b = B_RF; c_g = 1'b1; c_cd = C_ALL; end                  // 2 ACC + n_k la_v
-            7'd56: begin c_b = B_RF; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end             // p = n la - lis
-            P_EXP: begin c_ib = 1'b1; c_fl = FL_SAT; c_act = X_TABE; end                     // p <= 0; word j
-            7'd58: c_act = X_TAB1;
-            7'd59: c_act = X_W0;
-            7'd60: begin c_a = A_ZERO; c_b = B_W0; c_cd = C_ALL; end
-            7'd61: begin c_b = B_TABW; c_ib = 1'b1; c_ci = 1'b1; c_cd = C_ALL; end           // tdiff
-            7'd63: begin c_a = A_ZERO; c_b = B_TPH; c_ci = 1'b1; c_cd = C_ALL; end
-            7'd64: begin c_a = A_SHR; c_ia = 1'b1; c_b = B_W0; c_ci = 1'b1; c_cd = C_ALL; end   // 2^-f
-            7'd65: begin c_a = A_SHR; c_act = X_SHIFT; end                                   // >> (shift - 1)
-            7'd66: begin c_ci = 1'b1; c_cd = C_ALL; end                                      // + 1
-            7'd67: begin c_a = A_SHR; c_cd = C_ALL; end                                      // >> 1
-            P_OUT: c_act = X_OUT;
+                begin t_a = A_SHL; t_b = B_RF; t_g = 1'b1; t_cd = C_ALL; end                  // 2 ACC + n_k la_v
+            7'd56: begin t_b = B_RF; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; end             // p = n la - lis
+            P_EXP: begin t_ib = 1'b1; t_fl = FL_SAT; t_act = X_TABE; end                     // p <= 0; word j
+            7'd58: t_act = X_TAB1;
+            7'd59: t_act = X_W0;
+            7'd60: begin t_a = A_ZERO; t_b = B_W0; t_cd = C_ALL; end
+            7'd61: begin t_b = B_TABW; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; end           // tdiff
+            7'd63: begin t_a = A_ZERO; t_b = B_TPH; t_ci = 1'b1; t_cd = C_ALL; end
+            7'd64: begin t_a = A_SHR; t_ia = 1'b1; t_b = B_W0; t_ci = 1'b1; t_cd = C_ALL; end   // 2^-f
+            7'd65: begin t_a = A_SHR; t_act = X_SHIFT; end                                   // >> (shift - 1)
+            7'd66: begin t_ci = 1'b1; t_cd = C_ALL; end                                      // + 1
+            7'd67: begin t_a = A_SHR; t_cd = C_ALL; end                                      // >> 1
+            P_OUT: t_act = X_OUT;
             default: ;                                                                       // products (24, 40, 62)
         endcase
     end
@@ -220,16 +231,19 @@ module spec_setup_backend #(
     wire [EF:0] ex_w;
     spec_rom #(.AW(TB), .DW(LF), .INIT_FILE(LOG2_FILE)) u_log2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(lg_w));
     spec_rom #(.AW(TB), .DW(EF + 1), .INIT_FILE(EXP2_FILE)) u_exp2 (.clk(clk), .en(1'b1), .addr(tab_a), .data(ex_w));
-    wire tsel_exp = pc >= P_EXP;
-    wire [EF:0] tabw = tsel_exp ? (last ? (1 << (EF - 1)) : ex_w) : (last ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w});
+    reg tsel_exp;                           // pc >= P_EXP (a register, loaded with pc)
+    // the table word for B (a register: read two steps after its address, so one clock later is in time)
+    reg [EF:0] tabw;
+    always @(posedge clk)
+        tabw <= tsel_exp ? (last ? (1 << (EF - 1)) : ex_w) : (last ? (1 << LF) : {{(EF + 1 - LF) {1'b0}}, lg_w});
     reg [EF+RB:0] tprod;
     always @(posedge clk) tprod <= acc[EF:0] * tr;   // a DSP with its output register
 
     // ---- the ALU -------------------------------------------------------------------------------------------------
     reg flat, f_hi, f_lo, f_a, f_b, f_neg, f_big, sat, xpos, big;
     reg [5:0] sc;                           // the rounding shift of the C code, less one
-    wire [6:0] hidx = P_HORNER + N_W[6:0] - 7'd1 - pc;   // the exponent bit of this multiplication step
-    wire nb = s_n[hidx[3:0]];
+    wire [6:0] hidx = P_HORNER + N_W[6:0] - 7'd1 - pc1;  // the exponent bit of the next multiplication step
+    reg nb;                                 // the exponent bit of this one (a register, loaded with pc)
     reg signed [PW-1:0] opa, opb;
     always @* begin
         case (c_a)
@@ -249,8 +263,27 @@ module spec_setup_backend #(
             default: opb = {PW{1'b0}};
         endcase
     end
-    wire [PW-1:0] sum = (opa ^ {PW{c_ia}}) + (opb ^ {PW{c_ib}}) + {{(PW - 1) {1'b0}}, c_ci};
+    // A step of the ALU takes three clocks (bph 0, 1, 2): the operands (selected, inverted) into registers, their
+    // low halves added (the carry registered), the high halves added; the step acts in its last clock (stp). The
+    // steps that do not use the ALU (idle, normalize, shift, output) take one clock each. The operand and
+    // low-half registers run free: a step's inputs hold through its clocks.
+    localparam PL = PW / 2;
+    reg [PW-1:0] oa, ob;
+    reg [PL-1:0] sum_lo;
+    reg sum_cy;
+    reg [1:0] bph;
+    always @(posedge clk) begin
+        oa <= opa ^ {PW{c_ia}};
+        ob <= opb ^ {PW{c_ib}};
+        {sum_cy, sum_lo} <= {1'b0, oa[PL-1:0]} + {1'b0, ob[PL-1:0]} + {{PL{1'b0}}, c_ci};
+    end
+    wire [PW-PL-1:0] sum_hi = oa[PW-1:PL] + ob[PW-1:PL] + {{(PW - PL - 1) {1'b0}}, sum_cy};
+    wire [PW-1:0] sum = {sum_hi, sum_lo};
     wire neg = sum[PW-1];
+    // the step's kind, registers loaded with c_act (one-clock steps; the actions that may hold the program),
+    // and the ALU step's last clock (ph2 = bph is 2)
+    reg a_fast, a_idle, a_div, a_norm, a_shift, a_out, ph2;
+    wire stp = a_fast || ph2;
     reg cond;
     always @* begin
         case (c_cd)
@@ -272,24 +305,38 @@ module spec_setup_backend #(
     wire [DW:0] dsh = {drem, dnq[ZW-1]};
     wire [DW+1:0] ddif = {1'b0, dsh} - {2'b00, s_l, {S{1'b0}}};
     wire dge = !ddif[DW+1];
-    wire div_done = dcnt == ZW[5:0];
+    reg div_done;                           // dcnt == ZW (a register kept with dcnt)
 
     // ---- control -------------------------------------------------------------------------------------------------
-    wire c1_pos = !c1[W-1] && c1 != {W{1'b0}};
+    // registers (free-running) of the inputs' tests and of the output words: c1 and mag hold from the angles on,
+    // the output words' inputs from the output step on, which waits a clock for them (out_rdy)
+    reg c1_pos, mag_pos, out_rdy;
+    reg [C_W-1:0] c_out;
+    reg [6:0] f_out;
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
     wire zero_c = s_bad || nohl || (s_str == {STR_W{1'b0}}) || ((s_n != {N_W{1'b0}}) && !xpos);
-    wire norm_more = !lgx[F+1] && lg_e != 6'd0;
-    wire hold = (c_act == X_IDLE && !start) || (c_act == X_DIV && !lam_ok) || (c_act == X_NORM && norm_more) ||
-                (c_act == X_SHIFT && sc != 6'd0) ||
-                (c_act == X_OUT && !(m_tvalid && m_tready));
-    reg [6:0] pc_next;
-    always @* begin
-        if (hold) pc_next = pc;
-        else if (c_act == X_OUT) pc_next = 7'd0;
-        else pc_next = pc + 7'd1;
-    end
+    reg lge_nz, sc_nz, lam_q;               // lg_e != 0, sc != 0 (registers kept with them); lam_ok a clock later
+    wire norm_more = !lgx[F+1] && lge_nz;
+    wire hold = (a_idle && !start) || (a_div && !lam_q) || (a_norm && norm_more) || (a_shift && sc_nz) ||
+                (a_out && !(m_tvalid && m_tready));
+    wire adv = stp && !hold;                // the program moves on (to pc1, or to 0 after the output step)
+    wire wrap = a_out;
+    function [5:0] kind_of(input [3:0] act);   // {fast, idle, div, norm, shift, out}
+        kind_of = {act == X_IDLE || act == X_NORM || act == X_SHIFT || act == X_OUT, act == X_IDLE, act == X_DIV,
+                   act == X_NORM, act == X_SHIFT, act == X_OUT};
+    endfunction
+    wire [6:0] pc_next = wrap ? 7'd0 : pc1;
     wire [PW-LF-1:0] p_i = acc[PW-1:LF];
+    wire [5:0] sc_init = EF - C_W - 1 + {1'b0, p_i[4:0]};
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
+    always @(posedge clk) begin
+        c1_pos <= !c1[W-1] && c1 != {W{1'b0}};
+        mag_pos <= !mag[W-1] && mag != {W{1'b0}};
+        out_rdy <= c_act == X_OUT;
+        c_out <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
+        f_out <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
+                       : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
+    end
     assign m_n = s_n;
     assign m_l = s_l;
     assign m_dzeta = dnq[ANG_W-1:0];
@@ -297,8 +344,11 @@ module spec_setup_backend #(
     wire unused_bits;
     assign unused_bits = &{1'b0, tprod[RB-2:0], hidx[6:4], dnq[ZW-1:ANG_W], rd[PW-1:S+ANG_W], rd[S-1:0]};
 
-    // the register file: a registered read of the next step's word; a step's write takes ACC before the step
-    assign rf_ra = ra_of(pc_next, flat);
+    // the register file: a registered read of the next step's word, addressed in the last clock of an ALU step
+    // (the steps after the one-clock steps read no word; the output step's word stays in rd); a step's write
+    // takes ACC before the step (ACC holds through the step's clocks)
+    reg [3:0] ra_q;
+    assign rf_ra = ph2 ? ra_of(pc1, flat) : ra_q;
     // write and read in separate processes: a word is read at the earliest two steps after its write, so no
     // read-during-write relation is needed (and none is built)
     always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
@@ -306,15 +356,40 @@ module spec_setup_backend #(
 
     always @(posedge clk) begin
         done <= 1'b0;
+        ra_q <= rf_ra;
+        lam_q <= lam_ok;
         if (rst) begin
-            pc <= 7'd0;
+            pc1 <= 7'd1;
+            bph <= 2'd0;
+            ph2 <= 1'b0;
+            {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
+                {A_ACC, 1'b0, 1'b0, 1'b0, B_ZERO, 1'b0, C_NO, FL_NO, 1'b0, R_Z0, X_IDLE};
+            {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(X_IDLE);
+            nb <= 1'b0;
+            tsel_exp <= 1'b0;
             m_tvalid <= 1'b0;
             dcnt <= ZW[5:0];
+            div_done <= 1'b1;
         end else begin
             if (m_tvalid && m_tready) m_tvalid <= 1'b0;
-            pc <= pc_next;
-            if (c_cd != C_NO && cond && !hold) acc <= sum;
-            case (c_fl)
+            bph <= stp ? 2'd0 : bph + 2'd1;
+            ph2 <= !stp && bph == 2'd1;
+            if (adv) begin
+                pc1 <= pc_next + 7'd1;
+                if (wrap) begin
+                    {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
+                        {A_ACC, 1'b0, 1'b0, 1'b0, B_ZERO, 1'b0, C_NO, FL_NO, 1'b0, R_Z0, X_IDLE};
+                    {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(X_IDLE);
+                end else begin
+                    {c_a, c_ia, c_ib, c_ci, c_b, c_g, c_cd, c_fl, c_rw, c_wa, c_act} <=
+                        {t_a, t_ia, t_ib, t_ci, t_b, t_g, t_cd, t_fl, t_rw, t_wa, t_act};
+                    {a_fast, a_idle, a_div, a_norm, a_shift, a_out} <= kind_of(t_act);
+                end
+                nb <= s_n[hidx[3:0]];
+                tsel_exp <= !wrap && pc1 >= P_EXP;
+            end
+            if (stp && c_cd != C_NO && cond && !hold) acc <= sum;
+            if (stp) case (c_fl)
                 FL_HI: f_hi <= !neg;
                 FL_LO: f_lo <= neg;
                 FL_A: f_a <= !neg;
@@ -324,17 +399,19 @@ module spec_setup_backend #(
                 FL_SAT: sat <= neg;
                 default: ;
             endcase
-            case (c_act)
+            if (stp) case (c_act)
                 X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);   // lz: gamma at the start
                 X_LGX, X_LGS: begin
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
-                    if (c_act == X_LGX) xpos <= flat ? c1_pos : (!mag[W-1] && mag != {W{1'b0}});
+                    lge_nz <= 1'b1;
+                    if (c_act == X_LGX) xpos <= flat ? c1_pos : mag_pos;
                 end
                 X_NORM: begin
                     if (norm_more) begin
                         lgx <= {lgx[F:0], 1'b0};
                         lg_e <= lg_e - 6'd1;
+                        lge_nz <= lg_e != 6'd1;
                     end
                 end
                 X_TABL: begin
@@ -345,40 +422,45 @@ module spec_setup_backend #(
                     tab_a <= acc[LF-1 -: TB];
                     tr <= acc[LF-TB-1 -: RB];
                     big <= p_i > C_W + 1;
-                    sc <= EF - C_W - 1 + {1'b0, p_i[4:0]};
+                    sc <= sc_init;
+                    sc_nz <= sc_init != 6'd0;
                 end
+                // w0 = word j, read while this step's three clocks run (the address is word j + 1 afterwards)
                 X_TAB1: begin
                     tab_a <= tab_a + 1'b1;
                     last <= &tab_a;
+                    w0 <= tsel_exp ? ex_w : {{(EF + 1 - LF) {1'b0}}, lg_w};
                 end
-                X_W0: w0 <= tsel_exp ? ex_w : {{(EF + 1 - LF) {1'b0}}, lg_w};
                 X_SHIFT: begin
                     if (sc != 6'd0) begin
-                        acc <= sum;
+                        acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
                         sc <= sc - 6'd1;
+                        sc_nz <= sc != 6'd1;
                     end
                 end
                 X_OUT: begin
                     if (m_tvalid && m_tready) done <= 1'b1;
-                    if (div_done && !m_tvalid && !done) begin
+                    if (div_done && out_rdy && !m_tvalid && !done) begin
                         m_tvalid <= 1'b1;
-                        if (s_bad || flat) dnq <= {ZW{1'b0}};
-                        m_c <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
-                        m_flags <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
-                                         : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
+                        m_c <= c_out;
+                        m_flags <= f_out;
                     end
                 end
                 default: ;
             endcase
-            // the divider: started by step X_DIV with the numerator in ACC, then runs beside the program
-            if (c_act == X_DIV && !hold) begin
+            // the divider: started by step X_DIV with the numerator in ACC (in its first clock, again while the
+            // step waits for lambda), then runs beside the program
+            if (a_div && bph == 2'd0) begin
+                // a zero vector or a flat span: dzeta = 0, no division
                 drem <= {DW{1'b0}};
-                dnq <= acc[ZW-1:0];
-                dcnt <= 6'd0;
+                dnq <= (s_bad || flat) ? {ZW{1'b0}} : acc[ZW-1:0];
+                dcnt <= (s_bad || flat) ? ZW[5:0] : 6'd0;
+                div_done <= s_bad || flat;
             end else if (!div_done) begin
                 drem <= dge ? ddif[DW-1:0] : dsh[DW-1:0];
                 dnq <= {dnq[ZW-2:0], dge};
                 dcnt <= dcnt + 6'd1;
+                div_done <= dcnt == ZW[5:0] - 6'd1;
             end
         end
     end

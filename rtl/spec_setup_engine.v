@@ -6,10 +6,16 @@
 // (SetupModel::run).
 //
 // A pass with k lanes is k runs of the lane: the driving vector first (its micro-rotation directions are
-// recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector
-// (3 clocks, + 1 for the memory), ITERS micro-rotations with the gain terms of t added beside them, write
-// a, b, t back (3 clocks; not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below.
-// The back end starts when gamma is in the angle lane and takes lambda when the last run is done.
+// recorded), then each follower replaying them. A run: read a, b and the third coordinate t of one vector and
+// load them (8 clocks), the turn before the micro-rotations if any (3 clocks a quarter turn), ITERS
+// micro-rotations with the gain terms of t added beside them (3 clocks each), write a, b, t back (5 clocks;
+// not for the angle runs). The runs (P1..Q1, the angles) are the table `run_*` below. The back end starts when
+// gamma is in the angle lane and takes lambda when the last run is done.
+//
+// Timing (issue 13, docs/setup.md): every adder of the lane has registers only in front (the run's fields, the
+// shifted and direction-folded operands, the gain term, the loads and turns through the same operand
+// registers and a synchronous clear of the pair), the angle lane's adder is split in halves with a registered
+// carry, and the load's shift, tests and words are registered, at the price of clocks per span.
 //
 // Handshake: s_tready is 1 while idle (a register); m_tvalid and the output fields are registers and hold until
 // m_tready; the next span is taken once the descriptor has been handed over. rst: back to idle, output empty.
@@ -96,14 +102,26 @@ module spec_setup_engine #(
     //   23: lambda    vector 5, plane (z,x), angle
     localparam [7*NRUN-1:0] RUNS = 168'hb8f29b1b6ed4b342e8c3346465bb566c4c26488900;
     reg [4:0] run;
+    // the current run's fields and the run tests below are registers, loaded with the run number (the table is
+    // read at the next run's number one clock ahead), so that no adder sees run -> table -> select
+    reg [6:0] run_fields;
+    reg [4:0] run_tests;
     wire [2:0] run_vec;
     wire run_plane, run_halve;
     wire [1:0] run_role;
-    assign {run_vec, run_plane, run_role, run_halve} = RUNS[run*7 +: 7];
+    wire run_p2n2, run_p2p, run_p3n2, run_gamma, run_last;   // runs 6, 9, 10, 22, NRUN - 1
+    assign {run_vec, run_plane, run_role, run_halve} = run_fields;
+    assign {run_p2n2, run_p2p, run_p3n2, run_gamma, run_last} = run_tests;
+    function [4:0] tests_of(input [4:0] r);
+        tests_of = {r == 5'd6, r == 5'd9, r == 5'd10, r == 5'd22, r == NRUN - 1};
+    endfunction
 
     localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
     reg [2:0] st;
     reg [4:0] it;                         // micro-rotation
+    reg [1:0] rph;                        // its clock: 0 coarse shift, 1 fine shift, 2 sums
+    reg [1:0] qt;                         // quarter turns left before the micro-rotations
+    wire [4:0] run_nx = (st == ST_LOAD) ? 5'd0 : run + 5'd1;   // the run that a run change loads
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
     reg [W-1:0] vmem[0:31];
@@ -134,8 +152,18 @@ module spec_setup_engine #(
     localparam SHB = (VEC_W <= 16) ? 4 : (VEC_W <= 32) ? 5 : 6;
     reg [SHB-1:0] ld_sh;                  // the variable part of the shift of the vector being loaded
     wire signed [VEC_W-1:0] cx = vec_in[0 +: VEC_W], cy = vec_in[VEC_W +: VEC_W], cz = vec_in[2*VEC_W +: VEC_W];
-    wire [VEC_W-1:0] mx = cx[VEC_W-1] ? -cx : cx, my = cy[VEC_W-1] ? -cy : cy, mz = cz[VEC_W-1] ? -cz : cz;
-    wire [VEC_W-1:0] mor = mx | my | mz;   // its leading one is the largest magnitude's
+    // the vector's shift, P's axis and the zero test through three free-running registers (magnitudes; their OR
+    // and P's axis; the shift): the vector's first load clock (ld_c = 0) waits for them (ph 0..4)
+    reg [VEC_W-1:0] mx, my, mz, mor;       // mor: its leading one is the largest magnitude's
+    reg [1:0] pk_q;
+    reg [SHB-1:0] sh_q;
+    always @(posedge clk) begin
+        mx <= cx[VEC_W-1] ? -cx : cx;
+        my <= cy[VEC_W-1] ? -cy : cy;
+        mz <= cz[VEC_W-1] ? -cz : cz;
+        mor <= mx | my | mz;
+        pk_q <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
+    end
     reg [5:0] lead;
     integer k;
     always @* begin
@@ -148,22 +176,43 @@ module spec_setup_engine #(
     // k = y: (-nz, 0, nx); k = z: (ny, -nx, 0), from N1's prescaled words (the same shift): component c is 0
     // for c = k, else the remaining axis 3 - k - c of N1, negated for c = k + 2 (mod 3)
     reg [1:0] pk;
-    wire [1:0] p_c = ph[1:0] - 2'd2;      // the component written at phase ph (2..4)
+    wire [1:0] p_c = ph[1:0] - 2'd3;      // the component written at phase ph (3..5)
     wire [1:0] p_src = 2'd3 - pk - ph[1:0];   // the axis read at phase ph (0..2)
     wire p_neg = p_c == ((pk == 2'd0) ? 2'd2 : pk - 2'd1);
-    wire signed [W-1:0] v_neg = -$signed(v_rd);
+    // the words of the load, registers: a prescaled input component (ld_word a clock after vec_in holds the
+    // component: vec_in shifts a clock ahead of the writes), N1's word read and negated (with v_in) for P
+    reg signed [W-1:0] ld_wq, v_neg;
+    always @(posedge clk) begin
+        ld_wq <= ld_word;
+        v_neg <= -$signed(v_rd);
+    end
     localparam [5:0] VM1 = VEC_W - 1;
     wire [5:0] sh_var = VM1 - lead;       // 0 .. VEC_W - 1
     wire unused_sh = &{1'b0, sh_var};
+    always @(posedge clk) sh_q <= sh_var[SHB-1:0];
 
     // ---- the CORDIC lane -------------------------------------------------------------------------------------
     reg signed [W-1:0] la, lb, acc;       // the pair, the third coordinate's gain sum
+    // the angle lane's adder in two halves: the high half adds (with the low half's carry, registered) one clock
+    // after the low half; nothing reads lz in that clock (the lane's directions come from the pair)
+    localparam ZL = ZW / 2;
     reg signed [ZW-1:0] lz;
+    reg lz_cy, lz_hi;                     // the low half's carry; the high half adds in this clock
     reg [ITERS-1:0] drec;                 // the driver's directions (1: rotate by -atan)
     reg neg;                              // the driver's pair was turned by pi
     wire d_now = (run_role == 2'd1) ? drec[0] : ~lb[W-1];
-    wire signed [W-1:0] as = la >>> it;
-    wire signed [W-1:0] bs = lb >>> it;
+    // The pair's shifter in two register stages (free-running; it and the sources hold through a
+    // micro-rotation): cs = src >>> (it & ~3), then op = (cs >>> it[1:0]) ^ x, where x folds the direction in
+    // (x - y = x + ~y + 1, the carry in ci is x too). The adders then see registers only: la <= la + op_b + ci_la,
+    // lb <= lb + op_a + ci_lb. The loads and the turns go through the same lane with it = 0 and the pair cleared
+    // (a synchronous reset) before the sum: a load takes v_in as the source (sel_v*), a quarter turn
+    // (la, lb) <= (lb ^ xb + xb, la ^ xa + xa) with xa = d, xb = ~d, i.e. (lb, -la) for d = 1, (-lb, la) for d = 0.
+    reg sel_va, sel_vb;                   // the source is v_in (a load), else la / lb
+    reg op_xa, op_xb;
+    reg ci_la, ci_lb;                     // the carries into la's and lb's adders (x, or the rounding bit)
+    reg signed [W-1:0] cs_a, cs_b;
+    wire signed [W-1:0] fs_a = cs_a >>> it[1:0];   // (signed on its own: an XOR with x would make it logical)
+    wire signed [W-1:0] fs_b = cs_b >>> it[1:0];
     // The gain of the third coordinate (SetupModel::gain_mul: sum of sign * floor(t / 2^shift)) without a barrel
     // shifter: lts runs through t, t >>> 1, t >>> 2, ... (arithmetic shifts compose exactly), one step per
     // micro-rotation, and the term of shift i is added when it is one of the pass's terms. Shift -1 (t * 2) is
@@ -204,17 +253,41 @@ module spec_setup_engine #(
     reg [3:0] ph;                         // phase within a state
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
-    wire signed [W-1:0] v_half = $signed(v_rd + 1'b1) >>> 1;   // a coordinate rounded to half
-    wire signed [W-1:0] la_neg = -la, lb_neg = -lb;
+    // a coordinate rounded to half, (v + 1) >>> 1 = (v >>> 1) + v[0]: the shift here, the bit (v_rnd) is the
+    // carry into the pair's adder as the word is loaded
+    wire signed [W-1:0] v_half = $signed(v_rd) >>> 1;
+    // the word read, rounded to half for a halving run (a free-running register)
+    reg signed [W-1:0] v_in;
+    reg v_rnd;
+    always @(posedge clk) begin
+        v_in <= run_halve ? v_half : $signed(v_rd);
+        v_rnd <= run_halve & v_rd[0];
+    end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
+    // the pair's operands (shifter stages, free-running) and, set at rph 0, the third coordinate's gain term (or
+    // 0) with its carry in and the angle lane's operand
+    reg signed [W-1:0] op_a, op_b, op_t;
+    reg signed [ZW-1:0] op_z;
+    reg op_d, op_tc, op_zc;
+    always @(posedge clk) begin
+        cs_a <= (sel_va ? v_in : la) >>> {it[4:2], 2'b00};
+        cs_b <= (sel_vb ? v_in : lb) >>> {it[4:2], 2'b00};
+        op_a <= fs_a ^ {W{op_xa}};
+        op_b <= fs_b ^ {W{op_xb}};
+    end
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
-    wire lb_small = (lb < TAU) && (lb > -TAU);
-    wire acc_small = (acc < TAU) && (acc > -TAU);
+    reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
+    always @(posedge clk) begin
+        lb_small <= (lb < TAU) && (lb > -TAU);
+        acc_small <= (acc < TAU) && (acc > -TAU);
+    end
 
     always @(posedge clk) begin
         v_we <= 1'b0;
         be_start <= 1'b0;
+        lz_hi <= 1'b0;
+        if (lz_hi) lz[ZW-1:ZL] <= lz[ZW-1:ZL] + op_z[ZW-1:ZL] + {{(ZW - ZL - 1) {1'b0}}, lz_cy};
         if (rst) begin
             st <= ST_IDLE;
             s_tready <= 1'b0;
@@ -225,6 +298,7 @@ module spec_setup_engine #(
                     if (s_tvalid && s_tready) begin
                         s_tready <= 1'b0;
                         vec_in <= s_vec;
+                        run_fields <= RUNS[6:0];   // run 0 (not halving) while the load reads P's words by v_in
                         s_reg <= s_str;
                         n_reg <= s_n;
                         l_reg <= s_l;
@@ -239,34 +313,46 @@ module spec_setup_engine #(
                 // write the prescaled vectors (and P, and M1 = (0, 0, U)) into the vector memory
                 ST_LOAD: begin
                     if (ld_v == 3'd4) begin
-                        // P: read N1's words at phases 0..2, write P's at 2..4 (the read takes two clocks)
+                        // P: read N1's words at phases 0..2, write P's at 3..5 (the read and v_in / v_neg take
+                        // three clocks; v_in is the word itself: run_fields are run 0's, not halving)
                         ph <= ph + 4'd1;
                         if (ph < 4'd3) v_ra <= {3'd0, p_src};
-                        if (ph >= 4'd2) begin
+                        if (ph >= 4'd3) begin
                             v_we <= 1'b1;
                             v_wa <= {3'd4, p_c};
-                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_rd;
+                            v_wd <= (p_c == pk) ? {W{1'b0}} : p_neg ? v_neg : v_in;
                         end
-                        if (ph == 4'd4) begin
+                        if (ph == 4'd5) begin
                             ph <= 4'd0;
                             ld_v <= 3'd5;
                         end
                     end else if (ld_c == 2'd0) begin
                         // the vector's shift (input vectors) from its components' leading one
-                        ld_sh <= sh_var[SHB-1:0];
-                        if (ld_v == 3'd0) pk <= (mx <= my && mx <= mz) ? 2'd0 : (my <= mz) ? 2'd1 : 2'd2;
-                        if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
-                        ld_c <= 2'd1;
+                        // (phase 3: the shift; phase 4: ld_wq holds the x word, vec_in moves on to y)
+                        ph <= ph + 4'd1;
+                        if (ph == 4'd3) begin
+                            ld_sh <= sh_q;
+                            if (ld_v == 3'd0) pk <= pk_q;
+                            if (ld_v < 3'd4 && mor == {VEC_W{1'b0}}) bad <= 1'b1;
+                        end
+                        if (ph == 4'd4) begin
+                            ph <= 4'd0;
+                            if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
+                            ld_c <= 2'd1;
+                        end
                     end else begin
                         v_we <= 1'b1;
                         v_wa <= {ld_v, ld_c - 2'd1};
-                        v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_word;
-                        if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};   // the next component
+                        v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_wq;
+                        // the next component (three shifts a vector: at phase 4 and here for x and y)
+                        if (ld_v < 3'd4 && ld_c != 2'd3) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
                         if (ld_c == 2'd3) begin
                             ld_c <= 2'd0;
                             ld_v <= ld_v + 3'd1;
                             if (ld_v == 3'd5) begin
-                                run <= 5'd0;
+                                run <= run_nx;
+                                run_fields <= RUNS[run_nx*7 +: 7];
+                                run_tests <= tests_of(run_nx);
                                 ph <= 4'd0;
                                 st <= bad ? ST_BE : ST_RD;
                                 be_start <= bad;
@@ -277,62 +363,120 @@ module spec_setup_engine #(
                     end
                 end
                 // read a, b, t of the run's vector (the memory's read is registered: data one clock later)
+                // (a word read at phase k is in v_rd at k + 2 and in v_in, rounded to half or not, at k + 3; the
+                // negated pair at phase 6)
                 ST_RD: begin
                     ph <= ph + 4'd1;
                     case (ph)
-                        4'd0: v_ra <= {run_vec, ca};
+                        4'd0: begin
+                            v_ra <= {run_vec, ca};
+                            it <= 5'd0;
+                            la <= {W{1'b0}};
+                            lb <= {W{1'b0}};
+                            lz <= {ZW{1'b0}};
+                            op_xa <= 1'b0;
+                            op_xb <= 1'b0;
+                        end
                         4'd1: v_ra <= {run_vec, cb};
                         4'd2: begin
                             v_ra <= {run_vec, ct};
-                            la <= run_halve ? v_half : $signed(v_rd);
+                            sel_vb <= 1'b1;             // a' (in v_in at phase 3) -> cs_b -> op_b -> la
                         end
-                        4'd3: lb <= run_halve ? v_half : $signed(v_rd);
-                        default: begin
+                        4'd3: begin
+                            sel_vb <= 1'b0;
+                            sel_va <= 1'b1;             // b' (in v_in at phase 4) -> cs_a -> op_a -> lb
+                            ci_la <= v_rnd;
+                        end
+                        4'd4: begin
+                            sel_va <= 1'b0;
+                            ci_lb <= v_rnd;
+                        end
+                        4'd5: begin
+                            la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
+                            // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
                             lts <= v_rd;
-                            acc <= !tc_first[1] ? {W{1'b0}} : tc_first[0] ? -($signed(v_rd) <<< 1) : ($signed(v_rd) <<< 1);
-                            it <= 5'd0;
-                            lz <= {ZW{1'b0}};
+                            acc <= {W{1'b0}};
+                            op_t <= tc_first[1] ? (($signed(v_rd) <<< 1) ^ {W{tc_first[0]}}) : {W{1'b0}};
+                            op_tc <= tc_first[1] & tc_first[0];
+                        end
+                        4'd6: begin
+                            lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
+                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
+                        end
+                        default: begin
                             // the turn before the micro-rotations: by pi (frame passes; the driver decides,
-                            // followers replay), a quarter turn (angle runs)
-                            if (run_role == 2'd2) begin
-                                if (la[W-1]) begin
-                                    la <= lb[W-1] ? lb_neg : lb;
-                                    lb <= lb[W-1] ? la : la_neg;
-                                    lz <= lb[W-1] ? -HALF_PI : HALF_PI;
-                                end
-                            end else if ((run_role == 2'd0) ? la[W-1] : neg) begin
-                                la <= la_neg;
-                                lb <= lb_neg;
-                            end
+                            // followers replay; two quarter turns), a quarter turn (angle runs, la < 0)
+                            if (run_role == 2'd2) qt <= la[W-1] ? 2'd1 : 2'd0;
+                            else qt <= ((run_role == 2'd0) ? la[W-1] : neg) ? 2'd2 : 2'd0;
                             if (run_role == 2'd0) neg <= la[W-1];
+                            rph <= 2'd0;
                             st <= ST_ROT;
                         end
                     endcase
                 end
+                // a micro-rotation in three clocks (rph): the coarse shift, the fine shift with the direction, the
+                // sums (an adder each with registers only in front); first the turns (qt) the same way
                 ST_ROT: begin
-                    // one adder each: the direction folded into the operand (x - y = x + ~y + 1)
-                    la <= la + (bs ^ {W{~d_now}}) + {{(W - 1) {1'b0}}, ~d_now};         // d: la + bs, else la - bs
-                    lb <= lb + (as ^ {W{d_now}}) + {{(W - 1) {1'b0}}, d_now};           // d: lb - as, else lb + as
-                    lz <= lz + (atan_i ^ {ZW{~d_now}}) + {{(ZW - 1) {1'b0}}, ~d_now};   // d: + atan, else - atan
-                    // the directions: the driver records them, followers replay them (a rotating register)
-                    drec <= {d_now, drec[ITERS-1:1]};
-                    if (tc_rot[1]) acc <= acc + (lts ^ {W{tc_rot[0]}}) + {{(W - 1) {1'b0}}, tc_rot[0]};
-                    lts <= lts >>> 1;
-                    it <= it + 5'd1;
-                    if (it == ITERS - 1) begin
-                        st <= ST_WR;
-                        ph <= 4'd0;
+                    rph <= (rph == 2'd2) ? 2'd0 : rph + 2'd1;
+                    if (rph == 2'd0) begin
+                        if (qt != 2'd0) begin
+                            // a quarter turn: the angle runs' by the sign of b (gamma / lambda's quarter), pi as two
+                            op_xa <= (run_role == 2'd2) ? ~lb[W-1] : 1'b1;
+                            op_xb <= (run_role == 2'd2) ? lb[W-1] : 1'b0;
+                            ci_lb <= (run_role == 2'd2) ? ~lb[W-1] : 1'b1;
+                            ci_la <= (run_role == 2'd2) ? lb[W-1] : 1'b0;
+                            op_z <= (run_role == 2'd2) ? (lb[W-1] ? -HALF_PI : HALF_PI) : {ZW{1'b0}};
+                            op_zc <= 1'b0;
+                        end else begin
+                            op_xa <= d_now;                 // d: lb - as, else lb + as
+                            op_xb <= ~d_now;                // d: la + bs, else la - bs
+                            ci_lb <= d_now;
+                            ci_la <= ~d_now;
+                            op_z <= atan_i ^ {ZW{~d_now}};  // d: + atan, else - atan
+                            op_zc <= ~d_now;
+                            op_d <= d_now;
+                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
+                            op_tc <= tc_rot[1] & tc_rot[0];
+                        end
+                    end else if (rph == 2'd1) begin
+                        if (qt != 2'd0) begin
+                            la <= {W{1'b0}};
+                            lb <= {W{1'b0}};
+                        end
+                    end else begin
+                        la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
+                        lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
+                        {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
+                        lz_hi <= 1'b1;
+                        if (qt != 2'd0) begin
+                            qt <= qt - 2'd1;
+                        end else begin
+                            // the directions: the driver records them, followers replay them (a rotating register)
+                            drec <= {op_d, drec[ITERS-1:1]};
+                            acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
+                            lts <= lts >>> 1;
+                            it <= it + 5'd1;
+                            if (it == ITERS - 1) begin
+                                st <= ST_WR;
+                                ph <= 4'd0;
+                            end
+                        end
                     end
                 end
                 ST_WR: begin
                     ph <= ph + 4'd1;
                     v_we <= run_role != 2'd2;   // the angle runs keep their vectors (M1.z stays cos theta1)
-                    if (ph == 4'd0 && tc_last[1]) acc <= acc + (lts ^ {W{tc_last[0]}}) + {{(W - 1) {1'b0}}, tc_last[0]};
+                    // the last gain term (shift ITERS) through the pair's operand register and the adder
+                    if (ph == 4'd0) begin
+                        op_t <= tc_last[1] ? (lts ^ {W{tc_last[0]}}) : {W{1'b0}};
+                        op_tc <= tc_last[1] & tc_last[0];
+                    end
+                    if (ph == 4'd1) acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
                     case (ph)
                         4'd0: begin
                             v_wa <= {run_vec, ca};
                             v_wd <= la;
-                            if (run == 5'd10 && exact_opp) v_wd <= {W{1'b0}};   // P3: exactly opposite: rho2 := 0
+                            if (run_p3n2 && exact_opp) v_wd <= {W{1'b0}};   // P3: exactly opposite: rho2 := 0
                         end
                         4'd1: begin
                             v_wa <= {run_vec, cb};
@@ -344,30 +488,34 @@ module spec_setup_engine #(
                         end
                         // after P2's P run: exactly opposite normals take P's (x, y) for N2's
                         4'd3: begin
-                            v_we <= (run == 5'd9) && exact_opp;
+                            v_we <= run_p2p && exact_opp;
                             v_wa <= {3'd1, 2'd0};
                             v_wd <= lb;
                         end
                         default: begin
-                            v_we <= (run == 5'd9) && exact_opp;
+                            v_we <= run_p2p && exact_opp;
                             v_wa <= {3'd1, 2'd1};
                             v_wd <= acc;
                         end
                     endcase
+                    // (acc before the last gain term, as before the two-clock micro-rotations)
+                    // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite? (the pair's and acc's tests of
+                    // phase 0, registered)
+                    if (ph == 4'd1 && run_p2n2) exact_opp <= la[W-1] && lb_small && acc_small;
                     if (ph == 4'd0) begin
-                        // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite?
-                        if (run == 5'd6) exact_opp <= la[W-1] && lb_small && acc_small;
-                        // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
-                        if (run == 5'd10) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                         // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
-                        if (run == 5'd22) be_start <= 1'b1;
+                        if (run_gamma) be_start <= 1'b1;
                     end
+                    // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
+                    if (ph == 4'd1 && run_p3n2) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
-                        if (run == NRUN - 1) begin
+                        if (run_last) begin
                             st <= ST_BE;
                         end else begin
-                            run <= run + 5'd1;
+                            run <= run_nx;
+                            run_fields <= RUNS[run_nx*7 +: 7];
+                            run_tests <= tests_of(run_nx);
                             st <= ST_RD;
                         end
                     end

@@ -1,7 +1,11 @@
 // synth_wrap_shader - a place-and-route harness for spec_shader (spec_setup -> spec_stream) on small packages,
-// as syn/synth_wrap.v is for the cores: the 256-bit span-ends beat is shifted in serially, the pixel, tlast
-// and flags are XOR-reduced, every shader port is registered on both sides, so the timing report measures the
-// shader's own register-to-register paths. Not a usable top level: only for area and Fmax (make synth).
+// as syn/synth_wrap.v is for the cores: the pixel, tlast and flags are XOR-reduced into registers, the span-ends
+// beat comes from a serial shift register, so the timing report measures the shader's own register-to-register
+// paths. Not a usable top level: only for area and Fmax (make synth).
+// The beat is lean (the small shader fills the UP5K): its BW bits are the XORs of distinct pairs of NS shifted
+// bits (NS (NS - 1) / 2 >= BW), one LUT each that packs into the logic cell of the shader's register taking
+// the bit, instead of BW flip-flops. Every beat bit is a different function of the pins' registers, and the
+// shader registers every beat bit it uses before any arithmetic, so no shader logic can be simplified away.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -28,15 +32,39 @@ module synth_wrap_shader #(
     output reg  flag
 );
     localparam BW = `SETUP_BEAT_W;
-    reg [BW-1:0] sh;
+    localparam NS = 24;
+    // the k-th pair (i, j), i < j < NS, in the order (0, 1), (0, 2), ..., (1, 2), ...
+    function integer pair_of(input integer k, input integer second);
+        integer i, j, n;
+        begin
+            n = 0;
+            pair_of = 0;
+            for (i = 0; i < NS; i = i + 1)
+                for (j = i + 1; j < NS; j = j + 1) begin
+                    if (n == k) pair_of = (second != 0) ? j : i;
+                    n = n + 1;
+                end
+        end
+    endfunction
+    reg [NS-1:0] sh;
     reg strobe_q, rst_q, s_valid, m_ready;
     always @(posedge clk) begin
-        sh <= {sh[BW-2:0], din};
+        sh <= {sh[NS-2:0], din};
         strobe_q <= strobe;
         rst_q <= rst_n;
         s_valid <= strobe_q;
-        m_ready <= sh[BW-1] | strobe_q;
+        m_ready <= sh[NS-1] | strobe_q;
     end
+    wire [BW-1:0] beat;
+    genvar b;
+    generate
+        if (NS * (NS - 1) / 2 < BW) begin : g_check
+            synth_wrap_shader_needs_more_pairs too_few_shift_bits ();
+        end
+        for (b = 0; b < BW; b = b + 1) begin : g_beat
+            assign beat[b] = sh[pair_of(b, 0)] ^ sh[pair_of(b, 1)];
+        end
+    endgenerate
     wire s_ready, m_valid, m_last;
     wire [15:0] m_data;
     wire [6:0] m_user;
@@ -45,7 +73,7 @@ module synth_wrap_shader #(
         .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
         .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shader (
-        .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(sh),
+        .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(beat),
         .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tlast(m_last),
         .m_axis_tuser(m_user)
     );

@@ -67,7 +67,7 @@ module tb_spec_shader #(
         sent = 0;
         got = 0;
         cycles = 0;
-        limit = 2000 + nspans * (ITERATIVE ? 2000 : 40) + npixels * 4;
+        limit = 2000 + nspans * (ITERATIVE ? 4000 : 40) + npixels * 4;
         // rst_n low through the first rising edge; from then on inputs change on falling edges only
         @(negedge clk);
         rst_n = 1'b1;
