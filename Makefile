@@ -237,7 +237,7 @@ synth: build deps-synth
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom
 	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
-	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1 --out $(BUILD)/synth \
+	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1-3 --out $(BUILD)/synth \
 	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
