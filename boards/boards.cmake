@@ -97,6 +97,8 @@ verilate(vboard_modules SOURCES ${BC}/compose_seq.v ${BC}/seq_mul.v TOP_MODULE c
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GOUT_BITS=4 -GTAG_W=17 "-GOBJ_FILE=\"${BOARD_GEN}/objects_640x480.hex\"")
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
+verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q1
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=1)
 verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
   VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
 verilate(vboard_modules SOURCES ${BC}/frame_store.v TOP_MODULE frame_store PREFIX Vframe_store

@@ -264,6 +264,15 @@ def place(board, mode, device, synth_res, net, args, tools, out):
     rc, res["pnr_s"] = run(cmd, "%s/%s.nextpnr.log" % (rel, name))
     if rc != 0 or not os.path.exists(os.path.join(ROOT, rep)):
         res["note"] = "nextpnr failed (%s/%s.nextpnr.log)" % (rel, name)
+        # packing can need more logic cells than LUT4s: a flip-flop whose input is not a LUT's output takes a
+        # cell of its own (the count is in the log, before placement fails)
+        log = open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))).read()
+        m = re.search(r"ICESTORM_LC:\s*(\d+)\s*/\s*(\d+)", log)
+        if m:
+            res["lc"] = int(m.group(1))
+            if res["lc"] > int(m.group(2)):
+                res["fits"] = False
+                res["note"] = "does not fit after packing: %d logic cells of %s (nextpnr)" % (res["lc"], m.group(2))
         return res
     r = json.load(open(os.path.join(ROOT, rep)))
     res["clocks"] = nextpnr_clocks(r)

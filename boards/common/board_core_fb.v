@@ -50,7 +50,11 @@ module board_core_fb #(
     // frame_store_packed (36-bit words of three pixels: the ECP5's block RAM); FIFO_LUTRAM: the queues in
     // distributed RAM (the ECP5-25F's block RAM is the frame store's)
     parameter STORE_PACKED = 0,
-    parameter FIFO_LUTRAM = 0
+    parameter FIFO_LUTRAM = 0,
+    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 saves the queues' output registers (the iCEBreaker)
+    parameter META_AW = 8,             // shade_passes' sub-span queue: 2 keeps its 4 words in flip-flops, not a
+                                       // block RAM (the shader holds a few sub-spans at a time)
+    parameter COMPOSE_STEPS = 3        // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
 ) (
     input  wire        clk,
     input  wire        rst_n,
@@ -101,7 +105,6 @@ module board_core_fb #(
     reg [Y_W-1:0] y;                   // buffer line being rendered
     reg [Y_W:0] y2p2;                  // 2y + 2: the display line the beam must have reached
     reg in_start;                      // still in the displayed frame this rendered frame began in
-    reg [P_W-1:0] line_base;           // y * FB_W
     reg sp_start;
     wire sp_busy, sp_valid, sp_ready;
     wire [OBJ_W-1:0] sp_obj;
@@ -133,7 +136,6 @@ module board_core_fb #(
                     in_start <= 1'b1;
                     y <= {Y_W{1'b0}};
                     y2p2 <= {{(Y_W - 1) {1'b0}}, 2'd2};
-                    line_base <= {P_W{1'b0}};
                     rs <= R_LINE;
                 end
                 R_LINE: if (beam_past && cmd_ready && !clr_push) begin
@@ -149,7 +151,6 @@ module board_core_fb #(
                     end else begin
                         y <= y + {{(Y_W - 1) {1'b0}}, 1'b1};
                         y2p2 <= y2p2 + {{(Y_W - 1) {1'b0}}, 2'd2};
-                        line_base <= line_base + FB_W[P_W-1:0];
                         rs <= R_LINE;
                     end
                 end
@@ -170,7 +171,7 @@ module board_core_fb #(
     wire [X_W-1:0] px_x;
     wire [15:0] px_dif, px_spc;
     shade_passes #(
-        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM),
+        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
@@ -201,17 +202,21 @@ module board_core_fb #(
     end
 
     // ---- write queue: the line's clear, then its pixels, in order; the colour; the frame store ----------------
-    localparam CMD_W = 1 + P_W + OBJ_W + 32;
+    // A command carries the buffer line (clear) or the pixel's x (write), not the pixel's index: the frame
+    // store's index is made after the queue, from the line of the last clear (a line's pixels follow its
+    // clear, and the next clear waits for them: R_SPANS), so the queue is P_W - T_W bits narrower.
+    localparam XB_W = $clog2(FB_W), YB_W = $clog2(FB_H);
+    localparam T_W = (XB_W > YB_W) ? XB_W : YB_W;
+    localparam CMD_W = 1 + T_W + OBJ_W + 32;
     wire q_ready, c_valid, c_ready, w_valid, w_clear;
     wire [CMD_W-1:0] c_data;
-    wire [P_W-1:0] w_arg;
+    wire [T_W-1:0] w_tag;
     wire [11:0] w_rgb;
-    wire [P_W-1:0] wr_pixel = line_base + {{(P_W - X_W) {1'b0}}, px_x};
     wire q_push = clr_push | px_valid;
-    sync_fifo #(.W(CMD_W), .AW(8), .LUTRAM(FIFO_LUTRAM)) u_queue (
+    sync_fifo #(.W(CMD_W), .AW(8), .LUTRAM(FIFO_LUTRAM), .QUEUE(FIFO_QUEUE)) u_queue (
         .clk(clk), .rst_n(rst_n), .s_valid(q_push), .s_ready(q_ready),
-        .s_data(clr_push ? {1'b1, {(P_W - Y_W) {1'b0}}, y, {(OBJ_W + 32) {1'b0}}}
-                         : {1'b0, wr_pixel, px_obj, px_dif, px_spc}),
+        .s_data(clr_push ? {1'b1, y[T_W-1:0], {(OBJ_W + 32) {1'b0}}}      // y < FB_H, px_x < FB_W: the
+                         : {1'b0, px_x[T_W-1:0], px_obj, px_dif, px_spc}),   // bits above T_W are 0
         .m_valid(c_valid), .m_ready(c_ready), .m_data(c_data)
     );
     always @(posedge clk) begin
@@ -219,13 +224,30 @@ module board_core_fb #(
         else if (q_push && !q_ready) error <= 1'b1;
     end
     assign cmd_ready = q_ready;
-    compose_seq #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .OUT_BITS(4), .TAG_W(P_W), .MUL_STEPS(3), .OBJ_FILE(OBJ_FILE))
+    compose_seq #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .OUT_BITS(4), .TAG_W(T_W), .MUL_STEPS(COMPOSE_STEPS), .OBJ_FILE(OBJ_FILE))
     u_compose (
         .clk(clk), .rst_n(rst_n), .s_valid(c_valid), .s_ready(c_ready), .s_bypass(c_data[CMD_W-1]),
-        .s_tag(c_data[OBJ_W + 32 +: P_W]), .s_obj(c_data[32 +: OBJ_W]), .s_dif(c_data[31:16]),
-        .s_spc(c_data[15:0]), .m_valid(w_valid), .m_ready(cmd_ready_fs), .m_bypass(w_clear), .m_tag(w_arg),
+        .s_tag(c_data[OBJ_W + 32 +: T_W]), .s_obj(c_data[32 +: OBJ_W]), .s_dif(c_data[31:16]),
+        .s_spc(c_data[15:0]), .m_valid(w_valid), .m_ready(cmd_ready_fs), .m_bypass(w_clear), .m_tag(w_tag),
         .m_rgb(w_rgb)
     );
+
+    // the store's argument: the line for a clear; y * FB_W + x for a write, y from the last clear taken
+    function [P_W-1:0] times_fbw;      // line * FB_W by shifts and adds (a constant: no multiplier)
+        input [T_W-1:0] line;
+        integer b;
+        begin
+            times_fbw = {P_W{1'b0}};
+            for (b = 0; b < P_W; b = b + 1)
+                if (FB_W[b]) times_fbw = times_fbw + ({{(P_W - T_W) {1'b0}}, line} << b);
+        end
+    endfunction
+    reg [P_W-1:0] store_base;          // the line of the last clear the store took, times FB_W
+    always @(posedge clk) begin
+        if (w_valid && cmd_ready_fs && w_clear) store_base <= times_fbw(w_tag);
+    end
+    wire [P_W-1:0] w_arg = w_clear ? {{(P_W - T_W) {1'b0}}, w_tag}
+                                   : store_base + {{(P_W - T_W) {1'b0}}, w_tag};
 
     // ---- frame store and scanout ---------------------------------------------------------------------------
     reg fetch;
@@ -311,6 +333,6 @@ module board_core_fb #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, fetch_busy};
+    assign unused = &{1'b0, fetch_busy, px_x[X_W-1:T_W]};
 endmodule
 `default_nettype wire

@@ -23,7 +23,9 @@ module shade_passes #(
     parameter ROM12_FILE = "",
     parameter LOG2_FILE = "",
     parameter EXP2_FILE = "",
-    parameter FIFO_LUTRAM = 0          // sync_fifo's LUTRAM: the queues in distributed RAM
+    parameter FIFO_LUTRAM = 0,         // sync_fifo's LUTRAM: the queues in distributed RAM
+    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: its output queue's entries (1 or 3)
+    parameter META_AW = 8              // the sub-spans' queue (object, x0): 2^META_AW + 2 or + 3 entries
 ) (
     input  wire               clk,
     input  wire               rst_n,
@@ -140,7 +142,7 @@ module shade_passes #(
         end
     endgenerate
 
-    sync_fifo #(.W(OBJ_W + X_W), .AW(8), .LUTRAM(FIFO_LUTRAM)) u_meta (
+    sync_fifo #(.W(OBJ_W + X_W), .AW(META_AW), .LUTRAM(FIFO_LUTRAM), .QUEUE(FIFO_QUEUE)) u_meta (
         .clk(clk), .rst_n(rst_n), .s_valid(meta_push), .s_ready(meta_ready), .s_data({s_obj, s_x0}),
         .m_valid(meta_valid), .m_ready(meta_pop), .m_data(meta)
     );
@@ -149,7 +151,7 @@ module shade_passes #(
     wire dq_valid;
     wire [15:0] dq_data;
     wire dq_pop;
-    sync_fifo #(.W(16), .AW(9), .LUTRAM(FIFO_LUTRAM)) u_dfifo (
+    sync_fifo #(.W(16), .AW(9), .LUTRAM(FIFO_LUTRAM), .QUEUE(FIFO_QUEUE)) u_dfifo (
         .clk(clk), .rst_n(rst_n), .s_valid(d_out_valid), .s_ready(d_out_ready), .s_data(d_out_data),
         .m_valid(dq_valid), .m_ready(dq_pop), .m_data(dq_data)
     );
