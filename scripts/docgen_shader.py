@@ -115,7 +115,7 @@ def block_synth_shader(f):
         out.append("| %s | %s | %d | %d | %s | %d | %d | %s | %s | %s | %s |" % (
             r["target"], r["config"], r["lut"], r["ff"], r["lc"] if r.get("lc") is not None else "-", r["bram"],
             r["dsp"], fm, "-" if r.get("goal_mhz") is None else "%.1f" % r["goal_mhz"], "yes" if r["fits"] else "no",
-            "yes" if r["met"] else "no"))
+            "-" if r.get("goal_mhz") is None else ("yes" if r["met"] else "no")))
     out.append("")
     seeds = d.get("seeds") or [d["seed"]]
     out.append("(`make synth` on %s, placement seed%s %s%s.)" % (
