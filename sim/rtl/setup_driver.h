@@ -221,28 +221,35 @@ public:
         for (uint64_t c = 0; out.size() < expect || next < spans.size(); ++c) {
             if (c > max_cycles) throw std::runtime_error("spec_shader: no progress (deadlock?)");
             if (!offering && next < spans.size() && offer(rng)) offering = true;
-            top_->s_axis_tvalid = offering;
-            if (offering) {
-                uint32_t w[setup_params::BEAT_W / 32];
-                pack_setup_beat(spans[next], w);
-                for (int i = 0; i < setup_params::BEAT_W / 32; ++i) top_->s_axis_tdata[i] = w[i];
-            }
-            top_->m_axis_tready = ready(rng);
-            top_->eval();
-            if (on_cycle) on_cycle(*top_);
-            const bool in_fire = top_->s_axis_tvalid && top_->s_axis_tready;
-            if (top_->m_axis_tvalid && top_->m_axis_tready) {
-                if (out.size() == expect) throw std::runtime_error("spec_shader: a pixel nobody asked for");
-                out.push_back({top_->m_axis_tdata, top_->m_axis_tlast != 0, static_cast<unsigned>(top_->m_axis_tuser)});
-            }
-            step();
-            if (in_fire) {
+            const bool ready_now = ready(rng);
+            if (clock(offering ? &spans[next] : nullptr, ready_now, out, on_cycle)) {
                 offering = false;
                 ++next;
             }
+            if (out.size() > expect) throw std::runtime_error("spec_shader: a pixel nobody asked for");
         }
         top_->s_axis_tvalid = 0;
         return out;
+    }
+    // One clock: offers `span` (nullptr: s_axis_tvalid 0) with m_axis_tready = `ready`, appends the pixel handed
+    // over (if any) to `out`. `on_cycle`: called after the inputs are set, before the edge. True when the span
+    // was taken.
+    bool clock(const SetupInput* span, bool ready, std::vector<ShaderPixel>& out,
+               const std::function<void(V&)>& on_cycle = {}) {
+        top_->s_axis_tvalid = span != nullptr;
+        if (span) {
+            uint32_t w[setup_params::BEAT_W / 32];
+            pack_setup_beat(*span, w);
+            for (int i = 0; i < setup_params::BEAT_W / 32; ++i) top_->s_axis_tdata[i] = w[i];
+        }
+        top_->m_axis_tready = ready;
+        top_->eval();
+        if (on_cycle) on_cycle(*top_);
+        const bool taken = top_->s_axis_tvalid && top_->s_axis_tready;
+        if (top_->m_axis_tvalid && top_->m_axis_tready)
+            out.push_back({top_->m_axis_tdata, top_->m_axis_tlast != 0, static_cast<unsigned>(top_->m_axis_tuser)});
+        step();
+        return taken;
     }
 
 private:
