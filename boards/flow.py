@@ -28,6 +28,8 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "syn"))
+import synth  # noqa: E402  (syn/synth.py: the packed logic-cell count of a nextpnr-ice40 log)
 GEN = "boards/common/gen"
 
 
@@ -266,13 +268,13 @@ def place(board, mode, device, synth_res, net, args, tools, out):
         res["note"] = "nextpnr failed (%s/%s.nextpnr.log)" % (rel, name)
         # packing can need more logic cells than LUT4s: a flip-flop whose input is not a LUT's output takes a
         # cell of its own (the count is in the log, before placement fails)
-        log = open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))).read()
-        m = re.search(r"ICESTORM_LC:\s*(\d+)\s*/\s*(\d+)", log)
-        if m:
-            res["lc"] = int(m.group(1))
-            if res["lc"] > int(m.group(2)):
+        with open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))) as f:
+            lc = synth.packed_lc(f.read())
+        if lc:
+            res["lc"] = lc[0]
+            if lc[0] > lc[1]:
                 res["fits"] = False
-                res["note"] = "does not fit after packing: %d logic cells of %s (nextpnr)" % (res["lc"], m.group(2))
+                res["note"] = "does not fit after packing: %d logic cells of %d (nextpnr)" % lc
         return res
     r = json.load(open(os.path.join(ROOT, rep)))
     res["clocks"] = nextpnr_clocks(r)

@@ -221,6 +221,13 @@ def dsp_registers(target, netlist):
     return sorted(out, key=lambda d: d["cell"])
 
 
+def packed_lc(log_text):
+    """nextpnr-ice40's packed logic cells (a LUT4, a carry and a flip-flop each; in its log also when placement
+    fails): (used, available), or None when the log has no count."""
+    m = re.search(r"ICESTORM_LC:\s*(\d+)\s*/\s*(\d+)", log_text)
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
 def icetime_mhz(asc, log):
     """icetime's estimate for the routed design (UP5K timing database), MHz; None when it does not run."""
     if not shutil.which("icetime"):
@@ -307,10 +314,11 @@ def one(target, top, config, lanes, args, tools):
                     args.pnr_timeout, seed, plog)
                 break
             res["pnr_s"] = round(res["pnr_s"] + tp, 1)
-            m = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", open(plog).read())
-            if m:   # the packed logic cells (a LUT4, a carry and a flip-flop each), also when placement failed
-                res["lc"] = int(m.group(1))
-                fits = fits and int(m.group(1)) <= int(m.group(2))
+            with open(plog) as f:
+                lc = packed_lc(f.read())
+            if lc:
+                res["lc"] = lc[0]
+                fits = fits and lc[0] <= lc[1]
             if rc != 0 or not os.path.exists(rep):
                 res["pnr_error"] = "nextpnr failed (see %s)" % plog
                 break
