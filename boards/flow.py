@@ -106,7 +106,7 @@ BOARDS = {
 }
 
 
-def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
+def yosys_script(b, mode, rom_dir, json_out, stat_out, synth_cmd):
     d = BOARDS[b]
     files = core_rtl() + read_list("boards/common/board_common.f") + read_list(d["list"])
     params = dict(d["params"][mode])
@@ -121,7 +121,7 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth):
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += " -set SPLIT_K %d " % d["split_k"][mode] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
     return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
-            % (GEN, " ".join(files), chp, d["top"], synth, stat_out))
+            % (GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
 
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
@@ -209,10 +209,10 @@ def synthesize(board, mode, args, tools, out):
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)
     if board == "icebreaker":
-        synth = "synth_ice40 -dsp -spram -top %s -json %s" % (d["top"], net)
+        synth_cmd = "synth_ice40 -dsp -spram -top %s -json %s" % (d["top"], net)
     else:
-        synth = "synth_ecp5 -top %s -json %s" % (d["top"], net)
-    rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, stat, synth)],
+        synth_cmd = "synth_ecp5 -top %s -json %s" % (d["top"], net)
+    rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, stat, synth_cmd)],
                              "%s/%s.yosys.log" % (rel, name))
     if rc != 0:
         fail("yosys failed for %s (see %s/%s.yosys.log)" % (name, rel, name), 1)
@@ -228,7 +228,7 @@ def synthesize(board, mode, args, tools, out):
         res[k] = f(res)
     if args.breakdown:
         hstat = "%s/%s.hier.stat" % (rel, name)
-        hier = synth.replace(" -json %s" % net, "") + " -noflatten"
+        hier = synth_cmd.replace(" -json %s" % net, "") + " -noflatten"
         rc, _ = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, hstat, hier)],
                     "%s/%s.hier.yosys.log" % (rel, name))
         if rc == 0:
