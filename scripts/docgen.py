@@ -401,6 +401,7 @@ CALC = {
                                        for v in f.data("coverage")["files"].values() if v["line"][1]),
     "coverage_toggle_all": lambda f: 100.0 * f.data("coverage")["all"]["toggle"][0] /
     f.data("coverage")["all"]["toggle"][1],
+    "coverage_drift": lambda f: coverage_drift(f.data("coverage")),
     "long_pixels": lambda f: sum(r["pixels"] for r in f.data("test_long")["runs"]),
     "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
     # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
