@@ -20,3 +20,4 @@ spec_unit.v
 spec_spangen.v
 spec_stream_out.v
 spec_stream.v
+spec_stream_seq.v
