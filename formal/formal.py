@@ -100,7 +100,7 @@ JOBS = {
     "spec_shader": dict(
         core="spec_shader", wrapper="fv_spec_shader", shader=True, exclude=["spec_setup_pipe.v"],
         extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
-        cut=["u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
+        cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
 }
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
