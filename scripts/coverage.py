@@ -11,11 +11,13 @@ spec_delay.v counts as covered when any instance of any model ran it), and print
 With --uncovered it lists every line point that was never hit (file:line and what it is). With --annotate
 it also runs `verilator_coverage --annotate DIR` on the merged data (sources with counts beside each line).
 With --goal PCT the exit code is 1 when a file's line coverage is below PCT (files named with --allow are
-exempt: their uncovered lines are explained in docs/verification.md).
+exempt: their uncovered lines are explained in docs/verification.md). --json also records each RTL file's git
+blob hash (`git hash-object`), so that the documents can say which files changed after the run.
 """
 import argparse
 import collections
 import glob
+import hashlib
 import os
 import shutil
 import subprocess
@@ -45,6 +47,13 @@ def read_points(paths):
 NO_LOGIC = {
     "spec_param_check.v": "elaboration-time parameter rules only (a missing module when a rule is broken)",
 }
+
+
+def blob_hash(path):
+    """The file's git blob hash (what `git hash-object PATH` prints)."""
+    with open(path, "rb") as fh:
+        body = fh.read()
+    return hashlib.sha1(b"blob %d\0" % len(body) + body).hexdigest()
 
 
 def main():
@@ -150,7 +159,8 @@ def main():
         import time
         with open(a.json, "w") as fh:
             json.dump({"date": time.strftime("%Y-%m-%d"), "goal_line_pct": a.goal, "below_goal": below,
-                       "files": {f: {"line": per[f]["line"], "toggle": per[f]["toggle"]} for f in rtl_files},
+                       "files": {f: {"line": per[f]["line"], "toggle": per[f]["toggle"],
+                                     "blob": blob_hash(os.path.join(rtl_dir, f))} for f in rtl_files},
                        "all": {"line": tot_l, "toggle": tot_t}, "coverage_files": len(files)}, fh, indent=1)
             fh.write("\n")
     return 1 if below or nodata else 0

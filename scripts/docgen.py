@@ -401,6 +401,7 @@ CALC = {
                                        for v in f.data("coverage")["files"].values() if v["line"][1]),
     "coverage_toggle_all": lambda f: 100.0 * f.data("coverage")["all"]["toggle"][0] /
     f.data("coverage")["all"]["toggle"][1],
+    "coverage_drift": lambda f: coverage_drift(f.data("coverage")),
     "long_pixels": lambda f: sum(r["pixels"] for r in f.data("test_long")["runs"]),
     "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
     # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
@@ -665,8 +666,34 @@ def block_coverage(f):
         out.append("| `%s` | %s | %s |" % (name, cell(v["line"]), cell(v["toggle"]) if v["toggle"][1] else "-"))
     out.append("| all | %s | %s |" % (cell(d["all"]["line"]), cell(d["all"]["toggle"])))
     out.append("")
-    out.append("(`make coverage` on %s.)" % d["date"])
+    out.append("(`make coverage` on %s; %s.)" % (d["date"], coverage_drift(d)))
     return "\n".join(out)
+
+
+def coverage_drift(d):
+    """Which RTL files differ from what the coverage run measured (docs/data/coverage.json's blob hashes):
+    the table above holds for the files as they were then, not for these."""
+    import importlib.util   # scripts/coverage.py by path: a module named coverage may also be installed
+    spec = importlib.util.spec_from_file_location("spec_coverage", os.path.join(ROOT, "scripts", "coverage.py"))
+    cov = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(cov)
+    blob = cov.blob_hash
+    now = sorted(os.path.basename(p) for p in glob.glob(os.path.join(ROOT, "rtl", "*.v")))
+    changed = [n for n in now if n in d["files"] and "blob" in d["files"][n] and
+               d["files"][n]["blob"] != blob(os.path.join(ROOT, "rtl", n))]
+    unknown = [n for n in now if n in d["files"] and "blob" not in d["files"][n]]
+    new = [n for n in now if n not in d["files"]]
+    gone = [n for n in sorted(d["files"]) if n not in now]
+    parts = []
+    if changed:
+        parts.append("changed since that run, so not measured as they are now: " + ", ".join(changed))
+    if new:
+        parts.append("added since, not measured: " + ", ".join(new))
+    if gone:
+        parts.append("removed since: " + ", ".join(gone))
+    if unknown:
+        parts.append("the run recorded no content hashes, so changes since are not known")
+    return "; ".join(parts) if parts else "every RTL file is as that run measured it"
 
 
 # ---- the reference designs on boards (issue 15, docs/boards.md): make board-split, make bitstream -------------
