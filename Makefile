@@ -80,7 +80,7 @@ lint: deps
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top || exit 1; \
 	    echo "  $$top: clean"; \
 	done
-	@for top in spec_unit spec_stream; do \
+	@for top in spec_unit spec_stream spec_stream_seq; do \
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GDECODER_ROM=1 -GTSEL_W=3 || exit 1; \
 	    echo "  $$top with ROM 9's table field (DECODER_ROM = 1, TSEL_W = 3): clean"; \
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 \
@@ -99,6 +99,9 @@ lint: deps
 	done
 	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_setup -GITERATIVE=1 || exit 1
 	@echo "  spec_setup with ITERATIVE = 1: clean"
+	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_shader -GITERATIVE=1 -GBACKEND=1 \
+	    -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1
+	@echo "  spec_shader with ITERATIVE = 1, BACKEND = 1 (spec_stream_seq), up5k configuration: clean"
 	@for f in $(RTL_OTHER); do \
 	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \

@@ -126,7 +126,7 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth_cmd):
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
 # its subtree. Blocks: the shader's parts and the board's modules; the rest is the top's glue.
-BLOCKS = ["spec_setup", "spec_stream", "spec_shader", "sphere_spans", "light_gen", "shade_passes", "compose",
+BLOCKS = ["spec_setup", "spec_stream", "spec_stream_seq", "spec_shader", "sphere_spans", "light_gen", "shade_passes", "compose",
           "compose_seq", "frame_store", "frame_store_packed", "line_buffer", "video_timing", "tmds_encoder", "sync_fifo"]
 
 
@@ -170,7 +170,7 @@ def breakdown(stat_text, cells):
     return out
 
 
-SHADER = ("spec_setup", "spec_stream", "spec_shader")
+SHADER = ("spec_setup", "spec_stream", "spec_stream_seq", "spec_shader")
 
 
 def breakdown_totals(b, cells_limit):

@@ -70,8 +70,8 @@ JOBS = {
                 "u_gen.tail_v", "u_gen.head_l", "u_gen.head_zg", "u_gen.tail", "u_gen.prep_lq0", "u_gen.prep_lq1",
                 "u_gen.prep_lq2p", "u_gen.prep_nlqm1", "u_gen.prep_nlqm2", "u_gen.prep_lr", "u_gen.r_v",
                 "u_gen.r_ntk", "u_gen.r_last1_bc", "u_gen.r_second", "u_gen.r_end", "u_gen.r_s", "u_gen.bc",
-                "u_gen.r_nt2", "u_gen.bv", "u_gen.blst", "ctl_v", "ctl_l", "have_q", "skid_v", "skid_keep",
-                "skid_last"],
+                "u_gen.r_nt2", "u_gen.bv", "u_gen.blst", "ctl_v", "ctl_l", "u_out.have_q", "u_out.skid_v",
+                "u_out.skid_keep", "u_out.skid_last"],
         # the datapath's pixel value is cut off and left free (every value possible): the properties are
         # about flow control, and without the multipliers, ROMs and the 32-bit accumulator z3 is much faster
         cut=["dp_out"],
@@ -100,7 +100,7 @@ JOBS = {
     "spec_shader": dict(
         core="spec_shader", wrapper="fv_spec_shader", shader=True, exclude=["spec_setup_pipe.v"],
         extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
-        cut=["u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
+        cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=34, cover=34),
 }
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
@@ -134,15 +134,15 @@ MUTANTS = [
     ("spec_unit", "spec_ctrl.v", "if (sig37) begin", "if (sig37 && ff41) begin", "an equivalent change (must pass)"),
     ("spec_stream", "spec_spangen.v", "wire r_last1 = (r_v & ~r_ntk) | r_last1_bc;",
      "wire r_last1 = r_last1_bc;", "a span's last beat missed (spans run long)"),
-    ("spec_stream", "spec_stream.v", "(out_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
+    ("spec_stream", "spec_stream_out.v", "(in_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
      "the skid buffer drops a pixel on a stall"),
     ("spec_stream", "spec_spangen.v", "wire accept = s_axis_tvalid & ready_q;", "wire accept = s_axis_tvalid;",
      "a descriptor taken while tready is low"),
-    ("spec_stream", "spec_stream.v", "end else if (o_load) begin\n            m_axis_tdata",
+    ("spec_stream", "spec_stream_out.v", "end else if (o_load) begin\n            m_axis_tdata",
      "end else if (o_load | ~m_axis_tready) begin\n            m_axis_tdata", "tdata reloaded while stalled"),
-    ("spec_stream", "spec_stream.v", "            m_axis_tvalid <= 1'b0;\n            skid_v <= 1'b0;",
+    ("spec_stream", "spec_stream_out.v", "            m_axis_tvalid <= 1'b0;\n            skid_v <= 1'b0;",
      "            m_axis_tvalid <= 1'b0;", "reset leaves the skid buffer full"),
-    ("spec_stream_l4", "spec_stream.v", "m_axis_tkeep <= skid_v ? skid_keep : out_v;",
+    ("spec_stream_l4", "spec_stream_out.v", "m_axis_tkeep <= skid_v ? skid_keep : in_keep;",
      "m_axis_tkeep <= skid_v ? skid_keep : {LANES{1'b1}};", "tkeep keeps every slot of a span's last beat"),
     ("spec_setup", "spec_setup.v", "ready_q <= cnt_n < DEPTH;", "ready_q <= cnt_n <= DEPTH;",
      "spec_setup: one credit more than the FIFO holds"),

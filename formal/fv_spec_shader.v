@@ -42,7 +42,7 @@ module fv_spec_shader (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready),
         .m_axis_tdata(m_axis_tdata), .m_axis_tlast(m_axis_tlast), .m_axis_tuser(m_axis_tuser),
-        .\u_stream.dp_out.i (f_px), .\u_stream.dp_out ()
+        .\g_stream.u_stream.dp_out.i (f_px), .\g_stream.u_stream.dp_out ()
     );
 
     reg f_past = 1'b0, f_rst_q = 1'b0, f_rst_q2 = 1'b0;

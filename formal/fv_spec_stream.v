@@ -81,8 +81,8 @@ module fv_spec_stream #(
         .\u_gen.prep_nlqm1 (prep_nlqm1), .\u_gen.prep_nlqm2 (prep_nlqm2), .\u_gen.prep_lr (prep_lr),
         .\u_gen.r_v (r_v), .\u_gen.r_ntk (r_ntk), .\u_gen.r_last1_bc (r_last1_bc), .\u_gen.r_second (r_second),
         .\u_gen.r_end (r_end), .\u_gen.r_s (r_s), .\u_gen.bc (bc), .\u_gen.r_nt2 (r_nt2),
-        .\u_gen.bv (bv), .\u_gen.blst (blst), .ctl_v(ctl_v), .ctl_l(ctl_l), .have_q(have_q), .skid_v(skid_v),
-        .skid_keep(skid_keep), .skid_last(skid_last)
+        .\u_gen.bv (bv), .\u_gen.blst (blst), .ctl_v(ctl_v), .ctl_l(ctl_l), .\u_out.have_q (have_q),
+        .\u_out.skid_v (skid_v), .\u_out.skid_keep (skid_keep), .\u_out.skid_last (skid_last)
     );
     wire [L_W-1:0] d_l = s_axis_tdata[`SPEC_DESC_L_LSB +: L_W];
 

@@ -1,4 +1,5 @@
 spec_param_check.v
+spec_desc_check.v
 spec_reg.v
 spec_counter.v
 spec_accum.v
@@ -17,4 +18,6 @@ spec_saccum.v
 spec_ctrl.v
 spec_unit.v
 spec_spangen.v
+spec_stream_out.v
 spec_stream.v
+spec_stream_seq.v

@@ -2,7 +2,7 @@
 // multiplier 11 -> ROM 12 (table chosen by decoder 10) -> [interpolator, INTERP = 1] -> multiplier 13.
 // Every stage is registered and advances when `ce` is 1 (a stall holds everything, including ROM 12's read
 // register). Each pixel carries its own C, scale, table and `last` flag, so consecutive pixels may belong to
-// different spans. Latency from the input to `out`: LAT = 12 clocks (14 with INTERP = 1) of `ce`; no stage
+// different spans (SIDE = 1, the default); SIDE = 0: C and the table are the span's, held by the caller. Latency from the input to `out`: LAT = 12 clocks (14 with INTERP = 1) of `ce`; no stage
 // holds more than one DSP multiply or one carry chain.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -24,6 +24,9 @@ module spec_datapath #(
     parameter CTRL = 1,    // 0: no valid/last pipeline (out_valid, out_last, busy = 0; the output register
                            //    loads with every ce): the caller tracks its pixels (spec_stream)
     parameter DELAY_RAM = 0,   // 1: C's delay beside multiplier 11 and ROM 12 in block RAM (spec_delay RAM)
+    parameter SIDE = 1,    // 1: C and the table travel beside each pixel (delay lines); 0: the caller holds them
+                           //    for a whole span and changes them only while no pixel is in the pipeline
+                           //    (busy = 0): ROM 12 and multiplier 13 read them as they are (spec_stream_seq)
     parameter ROM12_FILE = ""
 ) (
     input  wire               clk,
@@ -37,6 +40,7 @@ module spec_datapath #(
     input  wire [C_W-1:0]     c,          // register 1
     output wire [OUT_W-1:0]   out,        // output 27
     output wire               out_valid,
+    output wire               out_valid_next,   // out_valid in the next cycle (CTRL = 1; 0 otherwise)
     output wire               out_last,
     output wire               busy        // a pixel is somewhere in the pipeline
 );
@@ -63,10 +67,12 @@ module spec_datapath #(
             end
             assign vs = vs_q;
             assign out_en = ce & vs_q[LAT-1];
+            assign out_valid_next = ce ? vs_q[LAT-1] : vs_q[LAT];
             spec_delay #(.W(1), .N(LAT)) u_last (.clk(clk), .ce(ce), .d(in_last), .q(out_last));
         end else begin : g_noctrl
             assign vs = {LAT{1'b0}};
             assign out_en = ce;
+            assign out_valid_next = 1'b0;
             assign out_last = 1'b0;
             wire unused_ctrl;
             assign unused_ctrl = &{1'b0, in_valid, in_last};
@@ -86,7 +92,7 @@ module spec_datapath #(
 
     // ROM 12 (stage 8), addressed by decoder 10's table (delayed to stage 7) and multiplier 11's position
     wire [TSEL_W-1:0] tsel_rom;   // the table, delayed to meet multiplier 11's position
-    spec_delay #(.W(TSEL_W), .N(M11)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel_rom));
+    spec_delay #(.W(TSEL_W), .N((SIDE != 0) ? M11 : 0)) u_tsel (.clk(clk), .ce(ce), .d(table_sel), .q(tsel_rom));
     wire [WORD_W-1:0] word12;
     spec_rom12 #(
         .TBL_AW(TBL_AW), .TSEL_W(TSEL_W), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .DELTA_W(DELTA_W), .WORD_W(WORD_W),
@@ -124,7 +130,7 @@ module spec_datapath #(
 
     // multiplier 13 (three stages) -> output 27
     wire [C_W-1:0] c_m;
-    spec_delay #(.W(C_W), .N(VS), .RAM(DELAY_RAM)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
+    spec_delay #(.W(C_W), .N((SIDE != 0) ? VS : 0), .RAM(DELAY_RAM)) u_c (.clk(clk), .ce(ce), .d(c), .q(c_m));
     spec_mul13 #(.C_W(C_W), .TBL_DW(TBL_DW), .OUT_W(OUT_W), .SHIFT(C_W + TBL_FRAC - OUT_W), .DSP_FF(P)) u_mul13 (
         .clk(clk), .rst(rst), .ce(ce), .en(out_en), .c(c_m), .value(value_m), .zero(zero_m),
         .out(out)

@@ -12,6 +12,9 @@
 // ITERATIVE = 0: spec_setup fully pipelined (a new span every clock); with spec_stream's default
 // configuration, the shader keeps spec_stream's one pixel per clock. ITERATIVE = 1: the small setup
 // (one span at a time, docs/setup.md) for the iCE40 UP5K, usually with spec_stream's up5k configuration.
+// BACKEND: 0 = spec_stream (one pixel per clock across span boundaries); 1 = spec_stream_seq (the compact back
+// end, one span at a time: the same pixels, a few hundred flip-flops instead of a few thousand, datapath
+// latency + 2 clocks between spans; for the small setup, which takes thousands of clocks a span).
 // Reset: rst_n synchronous, active low, for both; spans in flight are dropped.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -22,6 +25,7 @@ module spec_shader #(
     parameter FIFO_AW = 9,                      // spec_setup's descriptor FIFO (pipelined setup)
     parameter FLAGS_AW = (ITERATIVE != 0) ? 2 : 5,   // flags of up to 2^FLAGS_AW - 1 spans between setup and pixels
     parameter DELAY_RAM = 0,                    // 1: spec_stream's side-band delays in block RAM (UP5K: fewer cells)
+    parameter BACKEND = 0,                      // 0: spec_stream; 1: spec_stream_seq (one span at a time)
     parameter LOG2_FILE = `SETUP_LOG2_FILE,
     parameter EXP2_FILE = `SETUP_EXP2_FILE,
     // spec_stream's configuration (docs/stream.md)
@@ -97,14 +101,29 @@ module spec_shader #(
 
     // ---- the core --------------------------------------------------------------------------------------------------
     wire unused_keep;   // one lane (LANES = 1): tkeep is always 1
-    spec_stream #(
-        .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-        .DELAY_RAM(DELAY_RAM)
-    ) u_stream (
-        .clk(clk), .rst_n(rst_n), .s_axis_tvalid(to_stream), .s_axis_tready(s_ready), .s_axis_tdata(d_data),
-        .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata),
-        .m_axis_tlast(m_axis_tlast), .m_axis_tkeep(unused_keep)
-    );
+    generate
+        if (BACKEND == 0) begin : g_stream
+            spec_stream #(
+                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
+                .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                .DELAY_RAM(DELAY_RAM)
+            ) u_stream (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(to_stream), .s_axis_tready(s_ready), .s_axis_tdata(d_data),
+                .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata),
+                .m_axis_tlast(m_axis_tlast), .m_axis_tkeep(unused_keep)
+            );
+        end else if (BACKEND == 1) begin : g_seq
+            spec_stream_seq #(
+                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
+                .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+            ) u_stream (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(to_stream), .s_axis_tready(s_ready), .s_axis_tdata(d_data),
+                .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata),
+                .m_axis_tlast(m_axis_tlast), .m_axis_tkeep(unused_keep)
+            );
+        end else begin : g_backend
+            spec_parameter_error_BACKEND_must_be_0_or_1 check_the_BACKEND_parameter ();
+        end
+    endgenerate
 endmodule
 `default_nettype wire

@@ -76,11 +76,11 @@ module spec_stream #(
     input  wire              s_axis_tvalid,
     output wire              s_axis_tready,
     input  wire [DESC_W-1:0] s_axis_tdata,
-    output reg                     m_axis_tvalid,
+    output wire                    m_axis_tvalid,
     input  wire                    m_axis_tready,
-    output reg  [LANES*OUT_W-1:0]  m_axis_tdata,
-    output reg  [LANES-1:0]        m_axis_tkeep,
-    output reg                     m_axis_tlast
+    output wire [LANES*OUT_W-1:0]  m_axis_tdata,
+    output wire [LANES-1:0]        m_axis_tkeep,
+    output wire                    m_axis_tlast
 );
     wire rst = ~rst_n;
 
@@ -90,23 +90,12 @@ module spec_stream #(
         .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
     ) u_check ();
     // the descriptor's fields lie inside DESC_W and do not overlap
-    localparam C_END = DESC_C_LSB + C_W, N_END = DESC_N_LSB + N_W, L_END = DESC_L_LSB + L_W;
-    localparam Z_END = DESC_ZETA0_LSB + ANG_W, D_END = DESC_DZETA_LSB + ANG_W;
+    spec_desc_check #(
+        .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB),
+        .DESC_N_LSB(DESC_N_LSB), .DESC_L_LSB(DESC_L_LSB), .DESC_ZETA0_LSB(DESC_ZETA0_LSB),
+        .DESC_DZETA_LSB(DESC_DZETA_LSB)
+    ) u_desc_check ();
     generate
-        if (DESC_C_LSB < 0 || DESC_N_LSB < 0 || DESC_L_LSB < 0 || DESC_ZETA0_LSB < 0 || DESC_DZETA_LSB < 0 ||
-            C_END > DESC_W || N_END > DESC_W || L_END > DESC_W || Z_END > DESC_W || D_END > DESC_W)
-        begin : g_desc_inside
-            spec_parameter_error_a_descriptor_field_lies_outside_DESC_W check_the_DESC_LSB_parameters ();
-        end
-        if (!(C_END <= DESC_N_LSB || N_END <= DESC_C_LSB) || !(C_END <= DESC_L_LSB || L_END <= DESC_C_LSB) ||
-            !(C_END <= DESC_ZETA0_LSB || Z_END <= DESC_C_LSB) || !(C_END <= DESC_DZETA_LSB || D_END <= DESC_C_LSB) ||
-            !(N_END <= DESC_L_LSB || L_END <= DESC_N_LSB) || !(N_END <= DESC_ZETA0_LSB || Z_END <= DESC_N_LSB) ||
-            !(N_END <= DESC_DZETA_LSB || D_END <= DESC_N_LSB) || !(L_END <= DESC_ZETA0_LSB || Z_END <= DESC_L_LSB) ||
-            !(L_END <= DESC_DZETA_LSB || D_END <= DESC_L_LSB) ||
-            !(Z_END <= DESC_DZETA_LSB || D_END <= DESC_ZETA0_LSB))
-        begin : g_desc_overlap
-            spec_parameter_error_descriptor_fields_overlap check_the_DESC_LSB_parameters ();
-        end
         if (LANES != 1 && LANES != 2 && LANES != 4) begin : g_lanes
             spec_parameter_error_LANES_must_be_1_2_or_4 check_the_LANES_parameter ();
         end
@@ -174,7 +163,7 @@ module spec_stream #(
                 .d({b_c[j*C_W +: C_W], b_scale[j*SCALE_W +: SCALE_W], b_tsel[j*TSEL_W +: TSEL_W]}),
                 .q({c8, scale8, tsel8})
             );
-            wire dp_valid_unused, dp_last_unused, dp_busy_unused;
+            wire dp_valid_unused, dp_next_unused, dp_last_unused, dp_busy_unused;
             spec_datapath #(
                 .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
                 .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
@@ -183,54 +172,20 @@ module spec_stream #(
             ) u_dp (
                 .clk(clk), .rst(rst), .ce(ce), .in_valid(1'b0), .in_last(1'b0), .angle(angle8),
                 .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out[j*OUT_W +: OUT_W]),
-                .out_valid(dp_valid_unused), .out_last(dp_last_unused), .busy(dp_busy_unused)
+                .out_valid(dp_valid_unused), .out_valid_next(dp_next_unused), .out_last(dp_last_unused),
+                .busy(dp_busy_unused)
             );
         end
     endgenerate
 
-    // ---- output register with a skid buffer ---------------------------------------------------------------
-    // The pipeline's enable is a register (the skid buffer is empty), not m_axis_tready itself: no
-    // combinational path from m_axis_tready into the core's enables. When the sink stalls, the one beat
-    // already on its way is caught in the skid buffer and the pipeline stops a clock later.
-    reg skid_v, skid_last;
-    reg ce_q;            // = ~skid_v: the pipeline's enable straight from a flip-flop
-    reg [LANES-1:0] skid_keep;
-    reg [LANES*OUT_W-1:0] skid_data;
-    assign ce = ce_q;
-    // each next-state function below has at most four inputs: one LUT level from the flip-flops. have_q =
-    // skid_v | out_valid (a beat to offer: in the skid buffer or at the pipeline's end), kept as a register.
-    reg have_q;
-    wire o_load = have_q & (~m_axis_tvalid | m_axis_tready);
-    wire skid_v_d = skid_v ? ~m_axis_tready : (out_valid & m_axis_tvalid & ~m_axis_tready);
-    assign ce_next = ~skid_v_d;
+    // ---- output register with a skid buffer (spec_stream_out) ------------------------------------------------
     // out_valid in the next cycle: the stage before it moves up when ce
     wire out_valid_d = ce ? ctl_v[(NC-2)*LANES] : out_valid;
-    always @(posedge clk) begin
-        if (rst) begin
-            m_axis_tvalid <= 1'b0;
-            skid_v <= 1'b0;
-            ce_q <= 1'b1;
-            have_q <= 1'b0;
-        end else begin
-            ce_q <= ~skid_v_d;
-            have_q <= skid_v_d | out_valid_d;
-            m_axis_tvalid <= have_q | (m_axis_tvalid & ~m_axis_tready);
-            skid_v <= skid_v_d;
-        end
-        if (~skid_v) begin                  // an empty skid buffer copies the pipeline's output
-            skid_data <= dp_out;
-            skid_keep <= out_v;
-            skid_last <= out_last;
-        end
-        if (rst) begin                      // defined from the first reset on (4-state simulators)
-            m_axis_tdata <= {LANES*OUT_W{1'b0}};
-            m_axis_tkeep <= {LANES{1'b0}};
-            m_axis_tlast <= 1'b0;
-        end else if (o_load) begin
-            m_axis_tdata <= skid_v ? skid_data : dp_out;
-            m_axis_tkeep <= skid_v ? skid_keep : out_v;
-            m_axis_tlast <= skid_v ? skid_last : out_last;
-        end
-    end
+    spec_stream_out #(.LANES(LANES), .OUT_W(OUT_W)) u_out (
+        .clk(clk), .rst(rst), .in_valid(out_valid), .in_valid_next(out_valid_d), .in_data(dp_out),
+        .in_keep(out_v), .in_last(out_last), .ce(ce), .ce_next(ce_next), .m_axis_tvalid(m_axis_tvalid),
+        .m_axis_tready(m_axis_tready), .m_axis_tdata(m_axis_tdata), .m_axis_tkeep(m_axis_tkeep),
+        .m_axis_tlast(m_axis_tlast)
+    );
 endmodule
 `default_nettype wire

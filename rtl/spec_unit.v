@@ -155,15 +155,15 @@ module spec_unit #(
     endgenerate
 
     // Multiplier 11, ROM 12, [interpolator], multiplier 13
-    wire out_last_unused;
+    wire out_last_unused, out_next_unused;
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
         .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
         .clk(clk), .rst(rst), .ce(1'b1), .in_valid(fresh8), .in_last(1'b0), .angle(angle8), .scale(scale9),
-        .table_sel(table_sel), .c(c_q), .out(intensity_o), .out_valid(valid_o), .out_last(out_last_unused),
-        .busy(dp_busy)
+        .table_sel(table_sel), .c(c_q), .out(intensity_o), .out_valid(valid_o),
+        .out_valid_next(out_next_unused), .out_last(out_last_unused), .busy(dp_busy)
     );
 endmodule
 `default_nettype wire

@@ -15,7 +15,7 @@ Each run (target, top, configuration, LANES) synthesizes once and places and rou
 writes every run's figures to FILE (make synth: docs/data/synth.json, the table in docs/stream.md).
 ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
-Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit]
+Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit] (also spec_stream_seq)
                     [--configs up5k,default] [--lanes 1,2,4] [--runs RUNS] [--out build/synth]
                     [--specrom build/specrom] [--seeds 1-5] [--data FILE]
 RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
@@ -151,7 +151,7 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
         return companion_script(target, top, json_out, stat_out)
     files = " ".join(core_files())
     params = dict(CONFIGS[config])
-    params["UNIT"] = 1 if top == "spec_unit" else 0
+    params["UNIT"] = {"spec_unit": 1, "spec_stream_seq": 2}.get(top, 0)
     if lanes > 1:
         params["LANES"] = lanes
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
@@ -434,8 +434,9 @@ def main():
             fail("LANES must be 1, 2 or 4, not %d" % l)
         if top == "spec_shader" and not args.shader:
             fail("spec_shader needs --shader")
-        if top not in ("spec_stream", "spec_unit", "spec_shader") and top not in COMPANION:
-            fail("unknown top '%s' (spec_stream, spec_unit, %s; spec_shader with --shader)" % (top, ", ".join(COMPANION)))
+        if top not in ("spec_stream", "spec_stream_seq", "spec_unit", "spec_shader") and top not in COMPANION:
+            fail("unknown top '%s' (spec_stream, spec_stream_seq, spec_unit, %s; spec_shader with --shader)"
+                 % (top, ", ".join(COMPANION)))
         if c not in CONFIGS and top != "spec_shader":
             fail("unknown configuration '%s' (%s)" % (c, ", ".join(CONFIGS)))
     os.makedirs(args.out, exist_ok=True)

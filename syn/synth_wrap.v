@@ -1,4 +1,4 @@
-// synth_wrap - a place-and-route harness for spec_stream (and spec_unit) on small packages.
+// synth_wrap - a place-and-route harness for spec_stream (and spec_unit, spec_stream_seq) on small packages.
 // The iCE40 UP5K in SG48 has 39 I/O pins, far fewer than the core's ports, so the descriptor is shifted in
 // serially and the pixel bus is XOR-reduced; every core port is registered on both sides, so the timing
 // report measures the core's own register-to-register paths. Not a usable top level: only for area/Fmax.
@@ -6,7 +6,7 @@
 `default_nettype none
 `include "spec_params.vh"
 module synth_wrap #(
-    parameter UNIT = 0,   // 0: spec_stream, 1: spec_unit
+    parameter UNIT = 0,   // 0: spec_stream, 1: spec_unit, 2: spec_stream_seq (the same ports as spec_stream)
     parameter LANES = 1,  // spec_stream's LANES and PACK
     parameter PACK = 0,
     parameter TBL_AW = `SPEC_TBL_AW,
@@ -33,7 +33,7 @@ module synth_wrap #(
         rst_q <= rst_n;
     end
     generate
-        if (UNIT == 0) begin : g_stream
+        if (UNIT == 0 || UNIT == 2) begin : g_stream
             reg s_valid, m_ready;
             wire s_ready, m_valid, m_last;
             wire [LANES*16-1:0] m_data;
@@ -42,15 +42,26 @@ module synth_wrap #(
                 s_valid <= strobe_q;
                 m_ready <= sh[127] | strobe_q;
             end
-            spec_stream #(
-                .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
-                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-                .LANES(LANES), .PACK(PACK)
-            ) u_core (
-                .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
-                .s_axis_tdata(sh), .m_axis_tvalid(m_valid), .m_axis_tready(m_ready),
-                .m_axis_tdata(m_data), .m_axis_tkeep(m_keep), .m_axis_tlast(m_last)
-            );
+            if (UNIT == 0) begin : g_pipelined
+                spec_stream #(
+                    .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
+                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                    .LANES(LANES), .PACK(PACK)
+                ) u_core (
+                    .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
+                    .s_axis_tdata(sh), .m_axis_tvalid(m_valid), .m_axis_tready(m_ready),
+                    .m_axis_tdata(m_data), .m_axis_tkeep(m_keep), .m_axis_tlast(m_last)
+                );
+            end else begin : g_seq
+                spec_stream_seq #(
+                    .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
+                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+                ) u_core (
+                    .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
+                    .s_axis_tdata(sh), .m_axis_tvalid(m_valid), .m_axis_tready(m_ready),
+                    .m_axis_tdata(m_data), .m_axis_tkeep(m_keep), .m_axis_tlast(m_last)
+                );
+            end
             always @(posedge clk) begin
                 dout <= ^{m_data, m_keep, m_last};
                 flag <= s_ready ^ m_valid;

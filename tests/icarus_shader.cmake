@@ -2,7 +2,8 @@
 # beats and every pixel the bit-exact models give, the testbench drives the shader with random stalls on both
 # sides and exits non-zero ($fatal) on the first mismatch of value, tlast or tuser, a lost or extra pixel, a hang
 # or an output that is X after the one reset pulse. ITERATIVE=1: the small configuration with spec_stream's up5k
-# configuration (SPECROM writes its header and images into WORK/rom). Runs in WORK with absolute ROM paths.
+# configuration (SPECROM writes its header and images into WORK/rom); BACKEND=1 (optional): spec_shader's compact
+# back end spec_stream_seq. Runs in WORK with absolute ROM paths.
 file(MAKE_DIRECTORY ${WORK})
 set(INC -I${SRC}/rom)
 set(ROMPARAMS "-Ptb_spec_shader.ROM9_FILE=\"${SRC}/rom/rom9_scale.hex\"" "-Ptb_spec_shader.ROM12_FILE=\"${SRC}/rom/rom12_cosk.hex\"")
@@ -16,6 +17,9 @@ if(ITERATIVE)
   set(INC -I${WORK}/rom -I${SRC}/rom)
   set(ROMPARAMS "-Ptb_spec_shader.ITERATIVE=1")
   set(VCONFIG small)
+endif()
+if(DEFINED BACKEND)
+  list(APPEND ROMPARAMS "-Ptb_spec_shader.BACKEND=${BACKEND}")
 endif()
 list(APPEND ROMPARAMS "-Ptb_spec_shader.LOG2_FILE=\"${SRC}/rom/setup_log2.hex\""
                       "-Ptb_spec_shader.EXP2_FILE=\"${SRC}/rom/setup_exp2.hex\"")

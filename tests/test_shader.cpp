@@ -1,11 +1,13 @@
 // spec_shader (spec_setup -> spec_stream): span ends in, pixels out, against the bit-exact models (setup model,
 // then the core's model) under random stalls, with tlast per span and the span's flags on tuser; the AXI4-Stream
-// rules under backpressure; one pixel per clock with the pipelined setup; reset in the middle of a run.
+// rules under backpressure; one pixel per clock with the pipelined setup; reset in the middle of a run. The
+// small setup with either back end (spec_stream, spec_stream_seq: the iCEBreaker's) the same way.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "Vspec_shader.h"
+#include "Vspec_shader_seq.h"
 #include "Vspec_shader_small.h"
 #include "setup_driver.h"
 #include "setup_eval.h"
@@ -187,4 +189,100 @@ TEST(Shader, FlagsWhenTheOnlySpanLeavesAsTheNextArrives) {
         if (when[4] - when[3] == uint64_t(spec_params::STREAM_LATENCY)) ++met;
     }
     EXPECT_EQ(met, 1) << "the sweep of gaps must meet the corner exactly once";
+}
+
+// The small setup with the compact back end (BACKEND = 1, spec_stream_seq; the iCEBreaker's shader): the same
+// pixels and flags as the models under random stalls, the AXI4-Stream rules under backpressure, reset.
+TEST(Shader, SmallSeqEqualsModelsUnderStalls) {
+    const SetupModel sm;
+    const Model core(config_format("up5k"));
+    std::mt19937_64 rng(57);
+    ShaderDriver<Vspec_shader_seq> d;
+    bool stalled = false;
+    uint32_t data = 0;
+    unsigned last = 0, user = 0;
+    size_t checked = 0;
+    auto probe = [&](Vspec_shader_seq& t) {
+        if (stalled) {
+            ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready";
+            ASSERT_EQ(t.m_axis_tdata, data);
+            ASSERT_EQ(t.m_axis_tlast, last);
+            ASSERT_EQ(t.m_axis_tuser, user);
+            ++checked;
+        }
+        stalled = t.m_axis_tvalid && !t.m_axis_tready;
+        data = t.m_axis_tdata;
+        last = t.m_axis_tlast;
+        user = t.m_axis_tuser;
+    };
+    const double modes[][2] = {{1.0, 1.0}, {0.5, 0.5}, {1.0, 0.2}, {0.2, 0.05}};
+    for (const auto& m : modes) {
+        const auto in = shader_inputs(rng, sm.format(), 80, 40);
+        expect_pixels(sm, core, in, d.run(in, m[0], m[1], rng, 0, probe));
+    }
+    EXPECT_GT(checked, 1000u);
+    // reset with spans in flight: nothing of them comes out afterwards
+    auto in = shader_inputs(rng, sm.format(), 6, 20);
+    std::vector<ShaderPixel> px;
+    for (int i = 0, sent = 0; i < 6000; ++i) {
+        if (d.clock(sent < 6 ? &in[size_t(sent)] : nullptr, i % 3 == 0, px)) ++sent;
+    }
+    ASSERT_FALSE(px.empty());
+    d.reset();
+    d.step();
+    EXPECT_FALSE(d.top().m_axis_tvalid);
+    const auto fresh = shader_inputs(rng, sm.format(), 20, 10);
+    expect_pixels(sm, core, fresh, d.run(fresh, 1.0, 0.7, rng));
+}
+
+// spec_stream_seq takes the next descriptor as soon as the last span's pixels have left its datapath, while
+// the span's last pixel may still wait for the sink: the flags FIFO's push (the new span) and pop (the old
+// span's last pixel) can meet in one clock. The sink holds the first span's last pixel until a release cycle
+// swept around the clock at which the second span's descriptor arrives: the flags must stay each span's own.
+TEST(Shader, SmallSeqFlagsWhenTheNextSpanArrivesAsTheLastPixelLeaves) {
+    const SetupModel sm;
+    const Model core(config_format("up5k"));
+    std::mt19937_64 rng(58);
+    ShaderDriver<Vspec_shader_seq> d;
+    const int lat = config_format("up5k").stream_seq_latency();
+    for (int trial = 0; trial < 4; ++trial) {
+        SetupInput a = random_case(rng, sm.format(), SpanKind::random, static_cast<unsigned>(rng() % 1024), 8);
+        a.l = 3;
+        SetupInput b;
+        do {
+            b = random_case(rng, sm.format(), SpanKind(rng() % unsigned(SpanKind::count)),
+                            static_cast<unsigned>(rng() % 1024), 8);
+            b.l = 0;
+        } while (sm.run(b).flags == sm.run(a).flags);
+        // hold = 0: the sink always ready; else it holds a's last pixel until `hold` clocks after the start
+        auto run = [&](uint64_t hold, std::vector<ShaderPixel>& px, std::vector<uint64_t>& when) {
+            d.reset();
+            const uint64_t c0 = d.cycle();
+            int sent = 0;
+            for (int i = 0; i < 20000 && px.size() < 5; ++i) {
+                const bool ready = !(hold && px.size() == 3 && d.cycle() - c0 < hold);
+                const size_t had = px.size();
+                if (d.clock(sent == 0 ? &a : sent == 1 ? &b : nullptr, ready, px)) ++sent;
+                if (px.size() > had) when.push_back(d.cycle() - c0);
+            }
+        };
+        std::vector<ShaderPixel> px;
+        std::vector<uint64_t> when;
+        run(0, px, when);
+        ASSERT_EQ(px.size(), 5u);
+        expect_pixels(sm, core, {a, b}, px);
+        const uint64_t arrive = when[4] - uint64_t(lat);   // b's descriptor reaches spec_stream_seq about here
+        ASSERT_GT(arrive, when[3] + 4) << "b arrives after a has left: the test would not meet the corner";
+        for (uint64_t hold = arrive - 4; hold <= arrive + 4; ++hold) {
+            px.clear();
+            when.clear();
+            run(hold, px, when);
+            ASSERT_EQ(px.size(), 5u) << "hold " << hold;
+            expect_pixels(sm, core, {a, b}, px);
+            if (HasFatalFailure()) {
+                ADD_FAILURE() << "trial " << trial << ", a's last pixel held until " << hold;
+                return;
+            }
+        }
+    }
 }

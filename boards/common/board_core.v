@@ -48,6 +48,7 @@ module board_core #(
     parameter SQRT_STEPS = 1,
     parameter SHADERS = 1,             // 1: both passes through one shader; 2: one shader per pass
     parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = small (iCE40), 0 = pipelined
+    parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
     parameter LOG2_FILE = "",          // spec_setup's tables
@@ -142,6 +143,7 @@ module board_core #(
     wire [15:0] px_dif, px_spc;
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(SHADERS), .SMALL(SHADER_SMALL),
+        .BACKEND(SHADER_BACKEND),
         .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
         .EXP2_FILE(EXP2_FILE)
     ) u_shade (

@@ -42,6 +42,7 @@ module board_core_fb #(
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
     parameter SHADER_SMALL = 1,
+    parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
     parameter LOG2_FILE = "",
@@ -171,7 +172,7 @@ module board_core_fb #(
     wire [X_W-1:0] px_x;
     wire [15:0] px_dif, px_spc;
     shade_passes #(
-        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
+        .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .BACKEND(SHADER_BACKEND), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),

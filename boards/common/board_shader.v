@@ -5,11 +5,13 @@
 // midpoint one: exact for a constant light vector along a slerp of the normal (docs/host.md), which is this
 // case. spec_stream runs its up5k configuration (interpolated 4 x 256 tables) on both boards.
 // SMALL = 1: spec_setup one span at a time (the iCE40 configuration); 0: fully pipelined.
+// BACKEND: spec_shader's back end, 0 = spec_stream, 1 = spec_stream_seq (one span at a time, few flip-flops).
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
 module board_shader #(
     parameter SMALL = 1,
+    parameter BACKEND = 0,
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
     parameter LOG2_FILE = "",
@@ -46,7 +48,7 @@ module board_shader #(
     end
     wire [6:0] flags_unused;
     spec_shader #(
-        .ITERATIVE(SMALL), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
+        .ITERATIVE(SMALL), .BACKEND(BACKEND), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
         .TBL_AW(8), .INTERP(1), .INTERP_FRAC(10), .DELTA_W(10), .SCALE_W(16), .SCALE_FRAC(13),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_shader (

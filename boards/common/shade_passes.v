@@ -18,6 +18,7 @@ module shade_passes #(
     parameter X_W = 11,
     parameter SHADERS = 1,
     parameter SMALL = 1,
+    parameter BACKEND = 0,             // board_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter SHADE_FILE = "",
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
@@ -89,8 +90,8 @@ module shade_passes #(
                 if (!rst_n) sent_d <= 1'b0;
                 else if (in_valid & in_ready) sent_d <= ~sent_d;
             end
-            board_shader #(.SMALL(SMALL), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-                           .EXP2_FILE(EXP2_FILE)) u_shader (
+            board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_shader (
                 .clk(clk), .rst_n(rst_n), .s_valid(in_valid), .s_ready(in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(second ? light_h : light_l), .s_n(second ? k_n : 10'd1),
                 .s_strength(second ? k_ks : k_kd), .s_l(s_l),
@@ -127,14 +128,14 @@ module shade_passes #(
                     sent_s <= s_done;
                 end
             end
-            board_shader #(.SMALL(SMALL), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-                           .EXP2_FILE(EXP2_FILE)) u_diffuse (
+            board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_diffuse (
                 .clk(clk), .rst_n(rst_n), .s_valid(d_in_valid), .s_ready(d_in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(light_l), .s_n(10'd1), .s_strength(k_kd), .s_l(s_l),
                 .m_valid(d_out_valid), .m_ready(d_out_ready), .m_data(d_out_data), .m_last(d_out_last)
             );
-            board_shader #(.SMALL(SMALL), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-                           .EXP2_FILE(EXP2_FILE)) u_specular (
+            board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_specular (
                 .clk(clk), .rst_n(rst_n), .s_valid(s_in_valid), .s_ready(s_in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(light_h), .s_n(k_n), .s_strength(k_ks), .s_l(s_l),
                 .m_valid(s_out_valid), .m_ready(s_out_ready), .m_data(s_out_data), .m_last(s_out_last)

@@ -1,7 +1,8 @@
 // icebreaker_top - the iCEBreaker reference design (docs/boards.md): the lit, animated sphere scene at
 // 640 x 480, 60 Hz through the 12-bit DVI Pmod (TFP410 transmitter) on PMOD 1A + 1B, drawn into a 320 x 240
 // frame buffer in the UP5K's SPRAM by spec_shader's small configuration and shown pixel-doubled
-// (board_core_fb: the small setup takes one span at a time, too slow to race the beam).
+// (board_core_fb: the small setup takes one span at a time, too slow to race the beam). The shader's back end
+// is the compact spec_stream_seq (one span at a time too): spec_stream's flip-flops do not fit the UP5K.
 //
 // Clocks: one domain, clk = 50.25 MHz from the PLL (icebreaker_prims.v), twice the pixel clock; pix_ce
 // marks every other cycle. The Pmod's pixel clock (25.125 MHz) is made by an I/O flip-flop that follows
@@ -71,7 +72,7 @@ module icebreaker_top #(
         .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-        .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1), .FIFO_QUEUE(1), .META_AW(2), .COMPOSE_STEPS(1),
+        .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1), .SHADER_BACKEND(1), .FIFO_QUEUE(1), .META_AW(2), .COMPOSE_STEPS(1),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .error(error),

@@ -106,12 +106,18 @@ struct Format {
     //   stream_acc:       spec_stream's pipelined accumulator (spec_saccum): an input stage, one stage per 12-bit
     //                     segment of ang_w + l_w bits, the last sum segment, two clamp stages;
     //   stream_latency:   spec_stream, descriptor accepted in cycle a (core idle) -> first beat in a + this
-    //                     (descriptor buffer and span generator 3, accumulator, datapath, output register).
+    //                     (descriptor buffer and span generator 3, accumulator, datapath, output register);
+    //   stream_seq_latency: spec_stream_seq, descriptor accepted in cycle a -> first pixel in a + this (span
+    //                     registers and ROM 9 1, spec_datapath with PIPE = 0, output register 1);
+    //   stream_seq_gap:   spec_stream_seq, clocks without a pixel between two spans when the next descriptor
+    //                     waits and the sink is ready (the last pixel leaves the datapath, then s_axis_tready).
     int datapath_latency() const { return 7 + 2 + (interp ? 2 : 0) + 3; }
     int unit_first_pixel() const { return datapath_latency() + 3; }
     int stream_datapath_latency() const { return datapath_latency() + 2 + (interp ? 2 : 0); }
     int stream_acc() const { return (ang_w + l_w + 11) / 12 + 4; }
     int stream_latency() const { return 4 + stream_acc() + stream_datapath_latency(); }
+    int stream_seq_latency() const { return datapath_latency() + 2; }
+    int stream_seq_gap() const { return datapath_latency() + 2; }
 
     // Throws std::invalid_argument with a one-line reason when the combination is not supported.
     void validate() const;

@@ -11,6 +11,7 @@
 `include "setup_params.vh"
 module tb_spec_shader #(
     parameter ITERATIVE = 0,
+    parameter BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter LOG2_FILE = `SETUP_LOG2_FILE,
@@ -30,7 +31,7 @@ module tb_spec_shader #(
     wire [6:0] m_user;
     reg m_ready = 1'b0;
 
-    spec_shader #(.ITERATIVE(ITERATIVE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
+    spec_shader #(.ITERATIVE(ITERATIVE), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
                   .EXP2_FILE(EXP2_FILE)) dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
         .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tlast(m_last),

@@ -1,4 +1,5 @@
-// tb_spec_stream - self-checking Icarus Verilog testbench for spec_stream.
+// tb_spec_stream - self-checking Icarus Verilog testbench for spec_stream (SEQ = 1: spec_stream_seq, the
+// compact back end, LANES = 1).
 // Reads +vectors=FILE (written by `specsim vectors` from the bit-exact C++ model; the same file as
 // tb_spec_unit), sends every span as a descriptor with random gaps on s_axis_tvalid, takes the pixels with
 // random m_axis_tready, and compares each pixel and tlast in order; any mismatch, a lost or extra pixel or a
@@ -16,7 +17,8 @@ module tb_spec_stream #(
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter LANES = 1,
-    parameter PACK = 0
+    parameter PACK = 0,
+    parameter SEQ = 0
 );
     localparam VMAX = 65536;
     localparam C_W = `SPEC_C_W, ANG_W = `SPEC_ANG_W, N_W = `SPEC_N_W, L_W = `SPEC_L_W, OUT_W = `SPEC_OUT_W;
@@ -33,11 +35,21 @@ module tb_spec_stream #(
     wire [LANES-1:0] m_keep;
     reg m_ready = 1'b0;
 
-    spec_stream #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LANES(LANES), .PACK(PACK)) dut (
-        .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
-        .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tkeep(m_keep),
-        .m_axis_tlast(m_last)
-    );
+    generate
+        if (SEQ == 0) begin : g_stream
+            spec_stream #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LANES(LANES), .PACK(PACK)) dut (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
+                .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tkeep(m_keep),
+                .m_axis_tlast(m_last)
+            );
+        end else begin : g_seq
+            spec_stream_seq #(.ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)) dut (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
+                .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tkeep(m_keep),
+                .m_axis_tlast(m_last)
+            );
+        end
+    endgenerate
 
     // after the one rst_n pulse, no output is ever X or Z
     reg reset_done = 1'b0;
