@@ -244,7 +244,10 @@ module spec_setup_engine #(
         end
     endgenerate
     reg signed [W-1:0] lts;               // t >>> it during the micro-rotations
-    wire [1:0] tc_rot = run_halve ? hterm[it + 1] : gterm[it + 1];
+    // the micro-rotation's term, looked up a clock ahead (a free-running register: it and the run hold from a
+    // micro-rotation's first clock on, and op_t takes the term in its second), so no table is in front of op_t
+    reg [1:0] tc_rot;
+    always @(posedge clk) tc_rot <= run_halve ? hterm[it + 1] : gterm[it + 1];
     wire [1:0] tc_first = run_halve ? hterm[0] : gterm[0];
     wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
     wire [ZW-1:0] atan_i = atab[it];
@@ -264,8 +267,8 @@ module spec_setup_engine #(
         v_rnd <= run_halve & v_rd[0];
     end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
-    // the pair's operands (shifter stages, free-running) and, set at rph 0, the third coordinate's gain term (or
-    // 0) with its carry in and the angle lane's operand
+    // the pair's operands (shifter stages, free-running), the angle lane's operand (set at rph 0) and the third
+    // coordinate's gain term (or 0) with its carry in (set at rph 1)
     reg signed [W-1:0] op_a, op_b, op_t;
     reg signed [ZW-1:0] op_z;
     reg op_d, op_tc, op_zc;
@@ -435,13 +438,15 @@ module spec_setup_engine #(
                             op_z <= atan_i ^ {ZW{~d_now}};  // d: + atan, else - atan
                             op_zc <= ~d_now;
                             op_d <= d_now;
-                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
-                            op_tc <= tc_rot[1] & tc_rot[0];
                         end
                     end else if (rph == 2'd1) begin
                         if (qt != 2'd0) begin
                             la <= {W{1'b0}};
                             lb <= {W{1'b0}};
+                        end else begin
+                            // the third coordinate's gain term (tc_rot: the term of this micro-rotation's it)
+                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
+                            op_tc <= tc_rot[1] & tc_rot[0];
                         end
                     end else begin
                         la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
