@@ -104,7 +104,8 @@ module spec_setup_backend #(
     localparam [2:0] FL_NO = 3'd0, FL_HI = 3'd1, FL_LO = 3'd2, FL_A = 3'd3, FL_B = 3'd4, FL_NEG = 3'd5, FL_BIG = 3'd6,
                      FL_SAT = 3'd7;
     localparam [3:0] X_NONE = 4'd0, X_DIV = 4'd1, X_LGX = 4'd2, X_LGS = 4'd3, X_NORM = 4'd4, X_TABL = 4'd5,
-                     X_TABE = 4'd6, X_TAB1 = 4'd7, X_W0 = 4'd8, X_SHIFT = 4'd9, X_OUT = 4'd10, X_IDLE = 4'd11;
+                     X_TABE = 4'd6, X_TAB1 = 4'd7, X_W0 = 4'd8, X_SHIFT = 4'd9, X_OUT = 4'd10, X_IDLE = 4'd11,
+                     X_FLAT = 4'd12;
     // program counters of the steps that the logic below refers to
     localparam [6:0] P_LOG_X = 7'd17, P_LOG_S = 7'd33, P_HORNER = 7'd46, P_EXP = 7'd57, P_OUT = 7'd68;
     // The step's control word c_* is a register, loaded from the table at pc1 (the program counter plus one, the
@@ -135,7 +136,7 @@ module spec_setup_backend #(
         // P_HORNER, from n's top bit), the other steps
         case (pc1)
             7'd0: t_act = X_IDLE;
-            7'd1: begin t_a = A_ZERO; t_b = B_LZ; t_cd = C_ALL; end                          // gamma
+            7'd1: begin t_a = A_ZERO; t_b = B_LZ; t_cd = C_ALL; t_act = X_FLAT; end          // gamma; flat
             7'd2: begin t_b = B_LSH; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_GAM; end            // + l 2^(S-1)
             7'd3: begin t_a = A_ZERO; t_b = B_LZ; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; t_act = X_DIV; end  // -lambda
             7'd4: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_Z0; end  // gamma
@@ -311,6 +312,7 @@ module spec_setup_backend #(
     // registers (free-running) of the inputs' tests and of the output words: c1 and mag hold from the angles on,
     // the output words' inputs from the output step on, which waits a clock for them (out_rdy)
     reg c1_pos, mag_pos, out_rdy;
+    reg flat_q;                             // the flat test of lz and s_l (step 1 takes it into flat)
     reg [C_W-1:0] c_out;
     reg [6:0] f_out;
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
@@ -331,6 +333,7 @@ module spec_setup_backend #(
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
     always @(posedge clk) begin
         c1_pos <= !c1[W-1] && c1 != {W{1'b0}};
+        flat_q <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);
         mag_pos <= !mag[W-1] && mag != {W{1'b0}};
         out_rdy <= c_act == X_OUT;
         c_out <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
@@ -400,7 +403,9 @@ module spec_setup_backend #(
                 default: ;
             endcase
             if (stp) case (c_act)
-                X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);   // lz: gamma at the start
+                // lz holds gamma from the start until the lambda run begins (4 clocks), and flat is first read by
+                // step 3: step 1 (3 clocks) takes the registered test in its last clock
+                X_FLAT: flat <= flat_q;
                 X_LGX, X_LGS: begin
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
