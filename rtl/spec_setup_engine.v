@@ -281,10 +281,22 @@ module spec_setup_engine #(
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
     reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
-    always @(posedge clk) begin
-        lb_small <= (lb < TAU) && (lb > -TAU);
-        acc_small <= (acc < TAU) && (acc > -TAU);
-    end
+    // TAU = 2^TK (the generator's 2^(F + opp_tau_log2)): -TAU < x < TAU is "the bits above TK - 1 all 0, or all 1
+    // with a nonzero bit below", no comparator; any other TAU, the comparisons
+    localparam integer TK = $clog2(TAU);
+    generate
+        if (TAU > 1 && TAU < (1 << (W - 2)) && TAU == (1 << TK)) begin : g_tau_pow2
+            always @(posedge clk) begin
+                lb_small <= (lb[W-1:TK] == {(W - TK) {1'b0}}) || (&lb[W-1:TK] && |lb[TK-1:0]);
+                acc_small <= (acc[W-1:TK] == {(W - TK) {1'b0}}) || (&acc[W-1:TK] && |acc[TK-1:0]);
+            end
+        end else begin : g_tau_cmp
+            always @(posedge clk) begin
+                lb_small <= (lb < TAU) && (lb > -TAU);
+                acc_small <= (acc < TAU) && (acc > -TAU);
+            end
+        end
+    endgenerate
 
     always @(posedge clk) begin
         v_we <= 1'b0;
