@@ -18,9 +18,10 @@
 // registers.
 //
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
-// registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 the register file's read
-// register holding word R_ZETA): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
-// handover, and only then may the caller start the next span. rst: idle, output empty.
+// registers (m_n and m_l are the caller's, m_c and m_flags the registers c_out and f_out, m_dzeta is the
+// divider's quotient, m_zeta0 the register file's read register holding word R_ZETA): m_tvalid rises when the
+// span is finished and holds until m_tready; done is 1 in the clock after that handover, and only then may the
+// caller start the next span. rst: idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -60,12 +61,12 @@ module spec_setup_backend #(
     input  wire                 s_opp,   // opposite normals
     output reg                  m_tvalid,
     input  wire                 m_tready,
-    output reg  [C_W-1:0]       m_c,
+    output wire [C_W-1:0]       m_c,
     output wire [N_W-1:0]       m_n,
     output wire [L_W-1:0]       m_l,
     output wire [ANG_W-1:0]     m_zeta0,
     output wire [ANG_W-1:0]     m_dzeta,
-    output reg  [6:0]           m_flags
+    output wire [6:0]           m_flags
 );
     localparam S = ZF - ANG_FRAC;
     localparam PW = LF + N_W + 8;           // ACC: the widest value, p = n * (-log2 A) - log2 Is
@@ -340,6 +341,10 @@ module spec_setup_backend #(
         f_out <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
                        : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
     end
+    // m_c and m_flags are the free-running registers c_out and f_out: their inputs hold from the output step's
+    // first clock (out_rdy is a clock later) until the handover, so they hold while m_tvalid is 1
+    assign m_c = c_out;
+    assign m_flags = f_out;
     assign m_n = s_n;
     assign m_l = s_l;
     assign m_dzeta = dnq[ANG_W-1:0];
@@ -445,11 +450,7 @@ module spec_setup_backend #(
                 end
                 X_OUT: begin
                     if (m_tvalid && m_tready) done <= 1'b1;
-                    if (div_done && out_rdy && !m_tvalid && !done) begin
-                        m_tvalid <= 1'b1;
-                        m_c <= c_out;
-                        m_flags <= f_out;
-                    end
+                    if (div_done && out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;
                 end
                 default: ;
             endcase
