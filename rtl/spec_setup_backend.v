@@ -78,7 +78,7 @@ module spec_setup_backend #(
     // ---- register file: constants and kept values ---------------------------------------------------------------
     localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_ZETA = 4'd13, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
                      R_HPIM1 = 4'd7, R_S2 = 4'd8, R_OFF = 4'd9, R_OFFF = 4'd10, R_LAMAX = 4'd11, R_STRF = 4'd12;
-    reg [PW-1:0] rf[0:15];
+    (* no_rw_check *) reg [PW-1:0] rf[0:15];   // no read-during-write relation: see the read below
     wire [3:0] rf_ra;                       // the word the next step reads
     reg [PW-1:0] rd;
     reg signed [PW-1:0] acc;
@@ -358,7 +358,9 @@ module spec_setup_backend #(
     reg [3:0] ra_q;
     assign rf_ra = ph2 ? ra_of(pc1, flat) : ra_q;
     // write and read in separate processes: a word is read at the earliest two steps after its write, so no
-    // read-during-write relation is needed (and none is built)
+    // read-during-write relation is needed (a word read in a clock it is written is never used: the simulation
+    // check makes such reads X and the descriptors stay the same); no_rw_check tells Yosys so, else it keeps the
+    // old word with a second register stage on the write port and the read register outside the block RAM
     always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
     always @(posedge clk) rd <= rf[rf_ra];
 
