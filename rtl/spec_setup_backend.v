@@ -358,9 +358,10 @@ module spec_setup_backend #(
     reg [3:0] ra_q;
     assign rf_ra = ph2 ? ra_of(pc1, flat) : ra_q;
     // write and read in separate processes: a word is read at the earliest two steps after its write, so no
-    // read-during-write relation is needed (a word read in a clock it is written is never used: the simulation
-    // check makes such reads X and the descriptors stay the same); no_rw_check tells Yosys so, else it keeps the
-    // old word with a second register stage on the write port and the read register outside the block RAM
+    // read-during-write relation is needed (a word read in a clock it is written is never used; checked in
+    // simulation by making such reads X: the descriptors stay the same bit for bit); no_rw_check tells Yosys so,
+    // else it keeps the old word with a second register stage on the write port and the read register outside
+    // the block RAM
     always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
     always @(posedge clk) rd <= rf[rf_ra];
 

@@ -124,11 +124,11 @@ module spec_setup_engine #(
     wire [4:0] run_nx = (st == ST_LOAD) ? 5'd0 : run + 5'd1;   // the run that a run change loads
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
-    // No word read in the clock it is written is ever used (the reads that collide with a write are of the run's
-    // t while it is written back, and of M1 / P while the load writes them; the simulation check: such a read made
-    // X leaves every descriptor unchanged). no_rw_check tells Yosys so: without it, Yosys keeps the old word on a
-    // collision with a second register stage on the write port and the read register outside the block RAM
-    // (about 60 flip-flops without a LUT in front).
+    // No word read in the clock it is written is ever used (the read address stays on the word being written
+    // back or loaded; checked in simulation by making such reads X: the small shader's descriptors and pixels
+    // stay the same bit for bit). no_rw_check tells Yosys so: without it, Yosys keeps the old word on a collision
+    // with a second register stage on the write port and the read register outside the block RAM (about 60
+    // flip-flops without a LUT in front).
     (* no_rw_check *) reg [W-1:0] vmem[0:31];
     reg [4:0] v_ra, v_wa;
     reg v_we;
