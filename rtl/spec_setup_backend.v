@@ -298,6 +298,12 @@ module spec_setup_backend #(
             default: cond = 1'b0;
         endcase
     end
+    // ACC's write enables without the program's hold logic in front: only an ALU step with a condition (c_cd not
+    // C_NO; never a one-clock step) writes the sum, in its last clock, and of the holds only the divider's can
+    // stop it; the control word and the flags and tests the condition reads change only in a step's last clock,
+    // so the enable is a register loaded in the clock before (acc_en_pre). The shift step writes ACC >>> 1
+    // (a_shift: c_act is X_SHIFT; sc_nz: sc is not 0).
+    reg acc_en_pre;
 
     // ---- divider: dzeta = floor((gamma + l 2^(S-1)) / (l 2^S)), a quotient bit a clock (SetupModel::divide) --------
     localparam DW = L_W + S;
@@ -367,6 +373,7 @@ module spec_setup_backend #(
 
     always @(posedge clk) begin
         done <= 1'b0;
+        acc_en_pre <= !rst && !stp && bph == 2'd1 && c_cd != C_NO && cond;
         ra_q <= rf_ra;
         lam_q <= lam_ok;
         if (rst) begin
@@ -399,7 +406,12 @@ module spec_setup_backend #(
                 nb <= s_n[hidx[3:0]];
                 tsel_exp <= !wrap && pc1 >= P_EXP;
             end
-            if (stp && c_cd != C_NO && cond && !hold) acc <= sum;
+            if (acc_en_pre && !(a_div && !lam_q)) acc <= sum;
+            if (a_shift && sc_nz) begin
+                acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
+                sc <= sc - 6'd1;
+                sc_nz <= sc != 6'd1;
+            end
             if (stp) case (c_fl)
                 FL_HI: f_hi <= !neg;
                 FL_LO: f_lo <= neg;
@@ -443,13 +455,6 @@ module spec_setup_backend #(
                     tab_a <= tab_a + 1'b1;
                     last <= &tab_a;
                     w0 <= tsel_exp ? ex_w : {{(EF + 1 - LF) {1'b0}}, lg_w};
-                end
-                X_SHIFT: begin
-                    if (sc != 6'd0) begin
-                        acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
-                        sc <= sc - 6'd1;
-                        sc_nz <= sc != 6'd1;
-                    end
                 end
                 X_OUT: begin
                     if (m_tvalid && m_tready) done <= 1'b1;
