@@ -320,6 +320,17 @@ module spec_setup_backend #(
     // the output words' inputs from the output step on, which waits a clock for them (out_rdy)
     reg c1_pos, mag_pos, out_rdy;
     reg flat_q;                             // the flat test of lz and s_l (step 1 takes it into flat)
+    // lz < FLAT_Z: for FLAT_Z = 2^FK (the generator's 2^FLAT_LOG2 in angle-lane units) "negative, or no bit at
+    // FK or above", no carry chain; any other FLAT_Z, the comparison
+    localparam integer FK = $clog2(FLAT_Z);
+    wire lz_small;
+    generate
+        if (FLAT_Z > 1 && FLAT_Z < (1 << (ZW - 2)) && FLAT_Z == (1 << FK)) begin : g_flat_pow2
+            assign lz_small = lz[ZW-1] || (lz[ZW-2:FK] == {(ZW - 1 - FK) {1'b0}});
+        end else begin : g_flat_cmp
+            assign lz_small = lz < FLAT_Z;
+        end
+    endgenerate
     reg [C_W-1:0] c_out;
     reg [6:0] f_out;
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
@@ -340,7 +351,7 @@ module spec_setup_backend #(
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
     always @(posedge clk) begin
         c1_pos <= !c1[W-1] && c1 != {W{1'b0}};
-        flat_q <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);
+        flat_q <= (s_l == {L_W{1'b0}}) || lz_small;
         mag_pos <= !mag[W-1] && mag != {W{1'b0}};
         out_rdy <= c_act == X_OUT;
         c_out <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
