@@ -236,8 +236,6 @@ module spec_setup_engine #(
     localparam [31:0] HNEG32 = {{(32 - `SETUP_HALF_N) {1'b0}}, HNEG};
     wire [1:0] gterm[0:ITERS+1];
     wire [1:0] hterm[0:ITERS+1];
-    wire [1:0] gterm_it[0:31];            // the micro-rotations' terms indexed by it (shift it), no it + 1 adder
-    wire [1:0] hterm_it[0:31];
     wire [ZW-1:0] atab[0:31];
     genvar g;
     generate
@@ -247,15 +245,13 @@ module spec_setup_engine #(
         end
         for (g = 0; g < 32; g = g + 1) begin : g_atab
             assign atab[g] = (g < ITERS) ? ATAN[(g % ITERS)*ZW +: ZW] : {ZW{1'b0}};
-            assign gterm_it[g] = term_of(GSH32, GNEG32, `SETUP_GAIN_N, g);
-            assign hterm_it[g] = term_of(HSH32, HNEG32, `SETUP_HALF_N, g);
         end
     endgenerate
     reg signed [W-1:0] lts;               // t >>> it during the micro-rotations
     // the micro-rotation's term, looked up a clock ahead (a free-running register: it and the run hold from a
     // micro-rotation's first clock on, and op_t takes the term in its second), so no table is in front of op_t
     reg [1:0] tc_rot;
-    always @(posedge clk) tc_rot <= run_halve ? hterm_it[it] : gterm_it[it];   // = hterm / gterm[it + 1]
+    always @(posedge clk) tc_rot <= run_halve ? hterm[it + 1] : gterm[it + 1];
     wire [1:0] tc_first = run_halve ? hterm[0] : gterm[0];
     wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
     wire [ZW-1:0] atan_i = atab[it];
