@@ -18,9 +18,10 @@
 // registers.
 //
 // Handshake: start (one clock, while idle) begins a span; the inputs hold until done. The outputs m_* are
-// registers (m_n and m_l are the caller's, m_dzeta is the divider's quotient, m_zeta0 the register file's read
-// register holding word R_ZETA): m_tvalid rises when the span is finished and holds until m_tready; done is 1 in the clock after that
-// handover, and only then may the caller start the next span. rst: idle, output empty.
+// registers (m_n and m_l are the caller's, m_c and m_flags the registers c_out and f_out, m_dzeta is the
+// divider's quotient, m_zeta0 the register file's read register holding word R_ZETA): m_tvalid rises when the
+// span is finished and holds until m_tready; done is 1 in the clock after that handover, and only then may the
+// caller start the next span. rst: idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -60,12 +61,12 @@ module spec_setup_backend #(
     input  wire                 s_opp,   // opposite normals
     output reg                  m_tvalid,
     input  wire                 m_tready,
-    output reg  [C_W-1:0]       m_c,
+    output wire [C_W-1:0]       m_c,
     output wire [N_W-1:0]       m_n,
     output wire [L_W-1:0]       m_l,
     output wire [ANG_W-1:0]     m_zeta0,
     output wire [ANG_W-1:0]     m_dzeta,
-    output reg  [6:0]           m_flags
+    output wire [6:0]           m_flags
 );
     localparam S = ZF - ANG_FRAC;
     localparam PW = LF + N_W + 8;           // ACC: the widest value, p = n * (-log2 A) - log2 Is
@@ -77,7 +78,7 @@ module spec_setup_backend #(
     // ---- register file: constants and kept values ---------------------------------------------------------------
     localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_ZETA = 4'd13, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
                      R_HPIM1 = 4'd7, R_S2 = 4'd8, R_OFF = 4'd9, R_OFFF = 4'd10, R_LAMAX = 4'd11, R_STRF = 4'd12;
-    reg [PW-1:0] rf[0:15];
+    (* no_rw_check *) reg [PW-1:0] rf[0:15];   // no read-during-write relation: see the read below
     wire [3:0] rf_ra;                       // the word the next step reads
     reg [PW-1:0] rd;
     reg signed [PW-1:0] acc;
@@ -104,7 +105,8 @@ module spec_setup_backend #(
     localparam [2:0] FL_NO = 3'd0, FL_HI = 3'd1, FL_LO = 3'd2, FL_A = 3'd3, FL_B = 3'd4, FL_NEG = 3'd5, FL_BIG = 3'd6,
                      FL_SAT = 3'd7;
     localparam [3:0] X_NONE = 4'd0, X_DIV = 4'd1, X_LGX = 4'd2, X_LGS = 4'd3, X_NORM = 4'd4, X_TABL = 4'd5,
-                     X_TABE = 4'd6, X_TAB1 = 4'd7, X_W0 = 4'd8, X_SHIFT = 4'd9, X_OUT = 4'd10, X_IDLE = 4'd11;
+                     X_TABE = 4'd6, X_TAB1 = 4'd7, X_W0 = 4'd8, X_SHIFT = 4'd9, X_OUT = 4'd10, X_IDLE = 4'd11,
+                     X_FLAT = 4'd12;
     // program counters of the steps that the logic below refers to
     localparam [6:0] P_LOG_X = 7'd17, P_LOG_S = 7'd33, P_HORNER = 7'd46, P_EXP = 7'd57, P_OUT = 7'd68;
     // The step's control word c_* is a register, loaded from the table at pc1 (the program counter plus one, the
@@ -135,7 +137,7 @@ module spec_setup_backend #(
         // P_HORNER, from n's top bit), the other steps
         case (pc1)
             7'd0: t_act = X_IDLE;
-            7'd1: begin t_a = A_ZERO; t_b = B_LZ; t_cd = C_ALL; end                          // gamma
+            7'd1: begin t_a = A_ZERO; t_b = B_LZ; t_cd = C_ALL; t_act = X_FLAT; end          // gamma; flat
             7'd2: begin t_b = B_LSH; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_GAM; end            // + l 2^(S-1)
             7'd3: begin t_a = A_ZERO; t_b = B_LZ; t_ib = 1'b1; t_ci = 1'b1; t_cd = C_ALL; t_act = X_DIV; end  // -lambda
             7'd4: begin t_a = A_ZERO; t_b = B_RF; t_cd = C_ALL; t_rw = 1'b1; t_wa = R_Z0; end  // gamma
@@ -296,6 +298,12 @@ module spec_setup_backend #(
             default: cond = 1'b0;
         endcase
     end
+    // ACC's write enables without the program's hold logic in front: only an ALU step with a condition (c_cd not
+    // C_NO; never a one-clock step) writes the sum, in its last clock, and of the holds only the divider's can
+    // stop it; the control word and the flags and tests the condition reads change only in a step's last clock,
+    // so the enable is a register loaded in the clock before (acc_en_pre). The shift step writes ACC >>> 1
+    // (a_shift: c_act is X_SHIFT; sc_nz: sc is not 0).
+    reg acc_en_pre;
 
     // ---- divider: dzeta = floor((gamma + l 2^(S-1)) / (l 2^S)), a quotient bit a clock (SetupModel::divide) --------
     localparam DW = L_W + S;
@@ -311,6 +319,18 @@ module spec_setup_backend #(
     // registers (free-running) of the inputs' tests and of the output words: c1 and mag hold from the angles on,
     // the output words' inputs from the output step on, which waits a clock for them (out_rdy)
     reg c1_pos, mag_pos, out_rdy;
+    reg flat_q;                             // the flat test of lz and s_l (step 1 takes it into flat)
+    // lz < FLAT_Z: for FLAT_Z = 2^FK (the generator's 2^FLAT_LOG2 in angle-lane units) "negative, or no bit at
+    // FK or above", no carry chain; any other FLAT_Z, the comparison
+    localparam integer FK = $clog2(FLAT_Z);
+    wire lz_small;
+    generate
+        if (FLAT_Z > 1 && FLAT_Z < (1 << (ZW - 2)) && FLAT_Z == (1 << FK)) begin : g_flat_pow2
+            assign lz_small = lz[ZW-1] || (lz[ZW-2:FK] == {(ZW - 1 - FK) {1'b0}});
+        end else begin : g_flat_cmp
+            assign lz_small = lz < FLAT_Z;
+        end
+    endgenerate
     reg [C_W-1:0] c_out;
     reg [6:0] f_out;
     wire nohl = (s_n != {N_W{1'b0}}) && (flat ? !c1_pos : (f_a || f_b));
@@ -331,12 +351,17 @@ module spec_setup_backend #(
     wire [C_W-1:0] ccode = big ? {C_W{1'b0}} : (|acc[PW-1:C_W]) ? {C_W{1'b1}} : acc[C_W-1:0];
     always @(posedge clk) begin
         c1_pos <= !c1[W-1] && c1 != {W{1'b0}};
+        flat_q <= (s_l == {L_W{1'b0}}) || lz_small;
         mag_pos <= !mag[W-1] && mag != {W{1'b0}};
         out_rdy <= c_act == X_OUT;
         c_out <= zero_c ? {C_W{1'b0}} : sat ? {C_W{1'b1}} : ccode;
         f_out <= s_bad ? {1'b1, 2'b00, s_l == {L_W{1'b0}}, 3'b000}
                        : {1'b0, s_rule, nohl, s_l == {L_W{1'b0}}, !zero_c && sat, s_opp, flat};
     end
+    // m_c and m_flags are the free-running registers c_out and f_out: their inputs hold from the output step's
+    // first clock (out_rdy is a clock later) until the handover, so they hold while m_tvalid is 1
+    assign m_c = c_out;
+    assign m_flags = f_out;
     assign m_n = s_n;
     assign m_l = s_l;
     assign m_dzeta = dnq[ANG_W-1:0];
@@ -350,12 +375,16 @@ module spec_setup_backend #(
     reg [3:0] ra_q;
     assign rf_ra = ph2 ? ra_of(pc1, flat) : ra_q;
     // write and read in separate processes: a word is read at the earliest two steps after its write, so no
-    // read-during-write relation is needed (and none is built)
+    // read-during-write relation is needed (a word read in a clock it is written is never used; checked in
+    // simulation by making such reads X: the descriptors stay the same bit for bit); no_rw_check tells Yosys so,
+    // else it keeps the old word with a second register stage on the write port and the read register outside
+    // the block RAM
     always @(posedge clk) if (c_rw) rf[c_wa] <= acc;
     always @(posedge clk) rd <= rf[rf_ra];
 
     always @(posedge clk) begin
         done <= 1'b0;
+        acc_en_pre <= !rst && !stp && bph == 2'd1 && c_cd != C_NO && cond;
         ra_q <= rf_ra;
         lam_q <= lam_ok;
         if (rst) begin
@@ -388,7 +417,12 @@ module spec_setup_backend #(
                 nb <= s_n[hidx[3:0]];
                 tsel_exp <= !wrap && pc1 >= P_EXP;
             end
-            if (stp && c_cd != C_NO && cond && !hold) acc <= sum;
+            if (acc_en_pre && !(a_div && !lam_q)) acc <= sum;
+            if (a_shift && sc_nz) begin
+                acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
+                sc <= sc - 6'd1;
+                sc_nz <= sc != 6'd1;
+            end
             if (stp) case (c_fl)
                 FL_HI: f_hi <= !neg;
                 FL_LO: f_lo <= neg;
@@ -400,7 +434,9 @@ module spec_setup_backend #(
                 default: ;
             endcase
             if (stp) case (c_act)
-                X_IDLE: flat <= (s_l == {L_W{1'b0}}) || (lz < FLAT_Z);   // lz: gamma at the start
+                // lz holds gamma from the start until the lambda run begins (4 clocks), and flat is first read by
+                // step 3: step 1 (3 clocks) takes the registered test in its last clock
+                X_FLAT: flat <= flat_q;
                 X_LGX, X_LGS: begin
                     lgx <= (c_act == X_LGS) ? {{(F + 2 - STR_W) {1'b0}}, s_str} : flat ? c1[F+1:0] : mag[F+1:0];
                     lg_e <= F + 1;
@@ -431,20 +467,9 @@ module spec_setup_backend #(
                     last <= &tab_a;
                     w0 <= tsel_exp ? ex_w : {{(EF + 1 - LF) {1'b0}}, lg_w};
                 end
-                X_SHIFT: begin
-                    if (sc != 6'd0) begin
-                        acc <= acc >>> 1;   // the step's sum (A = ACC >>> 1, B = 0): no ALU needed
-                        sc <= sc - 6'd1;
-                        sc_nz <= sc != 6'd1;
-                    end
-                end
                 X_OUT: begin
                     if (m_tvalid && m_tready) done <= 1'b1;
-                    if (div_done && out_rdy && !m_tvalid && !done) begin
-                        m_tvalid <= 1'b1;
-                        m_c <= c_out;
-                        m_flags <= f_out;
-                    end
+                    if (div_done && out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;
                 end
                 default: ;
             endcase

@@ -124,11 +124,15 @@ module spec_setup_engine #(
     wire [4:0] run_nx = (st == ST_LOAD) ? 5'd0 : run + 5'd1;   // the run that a run change loads
 
     // ---- vector memory: address = vector * 4 + coordinate (0 x, 1 y, 2 z) -----------------------------------
-    reg [W-1:0] vmem[0:31];
+    // No word read in the clock it is written is ever used (the read address stays on the word being written
+    // back or loaded; checked in simulation by making such reads X: the small shader's descriptors and pixels
+    // stay the same bit for bit). no_rw_check tells Yosys so: without it, Yosys keeps the old word on a collision
+    // with a second register stage on the write port and the read register outside the block RAM (about 60
+    // flip-flops without a LUT in front).
+    (* no_rw_check *) reg [W-1:0] vmem[0:31];
     reg [4:0] v_ra, v_wa;
     reg v_we;
     reg [W-1:0] v_wd, v_rd;
-    // write and read in separate processes: no read-during-write relation (never used), so no bypass logic
     always @(posedge clk) if (v_we) vmem[v_wa] <= v_wd;
     always @(posedge clk) v_rd <= vmem[v_ra];
     // the coordinates of a, b, t for the current run
@@ -244,7 +248,10 @@ module spec_setup_engine #(
         end
     endgenerate
     reg signed [W-1:0] lts;               // t >>> it during the micro-rotations
-    wire [1:0] tc_rot = run_halve ? hterm[it + 1] : gterm[it + 1];
+    // the micro-rotation's term, looked up a clock ahead (a free-running register: it and the run hold from a
+    // micro-rotation's first clock on, and op_t takes the term in its second), so no table is in front of op_t
+    reg [1:0] tc_rot;
+    always @(posedge clk) tc_rot <= run_halve ? hterm[it + 1] : gterm[it + 1];
     wire [1:0] tc_first = run_halve ? hterm[0] : gterm[0];
     wire [1:0] tc_last = run_halve ? hterm[ITERS + 1] : gterm[ITERS + 1];
     wire [ZW-1:0] atan_i = atab[it];
@@ -264,8 +271,8 @@ module spec_setup_engine #(
         v_rnd <= run_halve & v_rd[0];
     end
     wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
-    // the pair's operands (shifter stages, free-running) and, set at rph 0, the third coordinate's gain term (or
-    // 0) with its carry in and the angle lane's operand
+    // the pair's operands (shifter stages, free-running), the angle lane's operand (set at rph 0) and the third
+    // coordinate's gain term (or 0) with its carry in (set at rph 1)
     reg signed [W-1:0] op_a, op_b, op_t;
     reg signed [ZW-1:0] op_z;
     reg op_d, op_tc, op_zc;
@@ -278,10 +285,22 @@ module spec_setup_engine #(
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
     reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
-    always @(posedge clk) begin
-        lb_small <= (lb < TAU) && (lb > -TAU);
-        acc_small <= (acc < TAU) && (acc > -TAU);
-    end
+    // TAU = 2^TK (the generator's 2^(F + opp_tau_log2)): -TAU < x < TAU is "the bits above TK - 1 all 0, or all 1
+    // with a nonzero bit below", no comparator; any other TAU, the comparisons
+    localparam integer TK = $clog2(TAU);
+    generate
+        if (TAU > 1 && TAU < (1 << (W - 2)) && TAU == (1 << TK)) begin : g_tau_pow2
+            always @(posedge clk) begin
+                lb_small <= (lb[W-1:TK] == {(W - TK) {1'b0}}) || (&lb[W-1:TK] && |lb[TK-1:0]);
+                acc_small <= (acc[W-1:TK] == {(W - TK) {1'b0}}) || (&acc[W-1:TK] && |acc[TK-1:0]);
+            end
+        end else begin : g_tau_cmp
+            always @(posedge clk) begin
+                lb_small <= (lb < TAU) && (lb > -TAU);
+                acc_small <= (acc < TAU) && (acc > -TAU);
+            end
+        end
+    endgenerate
 
     always @(posedge clk) begin
         v_we <= 1'b0;
@@ -435,13 +454,15 @@ module spec_setup_engine #(
                             op_z <= atan_i ^ {ZW{~d_now}};  // d: + atan, else - atan
                             op_zc <= ~d_now;
                             op_d <= d_now;
-                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
-                            op_tc <= tc_rot[1] & tc_rot[0];
                         end
                     end else if (rph == 2'd1) begin
                         if (qt != 2'd0) begin
                             la <= {W{1'b0}};
                             lb <= {W{1'b0}};
+                        end else begin
+                            // the third coordinate's gain term (tc_rot: the term of this micro-rotation's it)
+                            op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
+                            op_tc <= tc_rot[1] & tc_rot[0];
                         end
                     end else begin
                         la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};

@@ -70,6 +70,7 @@ module spec_shader #(
     reg [FLAGS_AW-1:0] fw, fr;
     reg [FLAGS_AW:0] fcnt;
     reg fspace;                                 // the FIFO has room for one more span (a register)
+    reg fempty, fone;                           // fcnt is 0, fcnt is 1 (registers kept with fcnt)
     wire s_ready;                               // spec_stream takes a descriptor
     wire to_stream = d_valid & fspace;
     assign d_ready = s_ready & fspace;
@@ -77,6 +78,8 @@ module spec_shader #(
     wire pop = m_axis_tvalid & m_axis_tready & m_axis_tlast;
     wire [FLAGS_AW:0] fcnt_n = fcnt + {{FLAGS_AW{1'b0}}, push} - {{FLAGS_AW{1'b0}}, pop};
     wire [FLAGS_AW-1:0] fr_next = fr + 1'b1;
+    // fcnt_n is 0 after a pop exactly when fcnt + push is 1: from the registered tests, not from fcnt_n
+    wire fzero_pop = (fone & ~push) | (fempty & push);
     always @(posedge clk) begin
         if (push) fmem[fw] <= d_flags;
         if (rst) begin
@@ -84,17 +87,22 @@ module spec_shader #(
             fr <= {FLAGS_AW{1'b0}};
             fcnt <= {(FLAGS_AW + 1) {1'b0}};
             fspace <= 1'b0;
+            fempty <= 1'b1;
+            fone <= 1'b0;
         end else begin
             if (push) fw <= fw + 1'b1;
             if (pop) fr <= fr_next;
             fcnt <= fcnt_n;
             fspace <= fcnt_n < (1 << FLAGS_AW) - 1;
+            fempty <= fcnt_n == {(FLAGS_AW + 1) {1'b0}};
+            fone <= fcnt_n == {{FLAGS_AW{1'b0}}, 1'b1};
         end
         // m_axis_tuser: the oldest span's flags, loaded when a span arrives at an empty FIFO and when the oldest
-        // span's last pixel leaves (its first pixel comes many clocks after its descriptor); reset to 0.
+        // span's last pixel leaves (its first pixel comes many clocks after its descriptor); reset to 0. The tests
+        // of fcnt are the registers fempty and fone, so that pop (tlast, tready) sees no adder on its way here.
         if (rst) m_axis_tuser <= 7'd0;
-        else if (pop ? (fcnt_n != {(FLAGS_AW + 1) {1'b0}}) : (push && fcnt == {(FLAGS_AW + 1) {1'b0}})) begin
-            if (pop && fcnt == {{FLAGS_AW{1'b0}}, 1'b1}) m_axis_tuser <= d_flags;   // it was the only span
+        else if (pop ? !fzero_pop : (push && fempty)) begin
+            if (pop && fone) m_axis_tuser <= d_flags;   // it was the only span
             else m_axis_tuser <= pop ? fmem[fr_next] : d_flags;
         end
     end
