@@ -221,7 +221,7 @@ deps-synth:
 # runs (spec_stream, up5k configuration, LANES = 1, 2 on the UP5K, 1 and 4 on the ECP5) go to docs/data/synth.json, from which
 # docs/stream.md's table is made (make docs). SYNTH_RUNS picks other runs (syn/synth.py --runs).
 SYNTH_RUNS ?= ice40-up5k:spec_stream:up5k:1 ice40-up5k:spec_stream:up5k:2 ecp5-25f:spec_stream:up5k:1 \
-              ecp5-25f:spec_stream:up5k:4
+              ecp5-25f:spec_stream:up5k:4 ice40-up5k:spec_stream_seq:up5k:1
 synth: build deps-synth
 	@mkdir -p $(BUILD)/synth && rm -f $(BUILD)/synth/synth.json
 	@# rows of runs that cannot run here (no ECP5 tools) keep the committed figures
