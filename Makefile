@@ -274,7 +274,7 @@ formal-shader: deps deps-formal configure
 	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader-mut \
 	    --jobs spec_setup,spec_shader --mutants --data docs/data/formal_mutants_shader.json
 
-# The properties fail on broken RTL: 11 small bugs, each must be caught, and an equivalent change passes
+# The properties fail on broken RTL: each small bug in formal.py's MUTANTS must be caught, and the equivalent change passes
 formal-mutants: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
 	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-mut --mutants --data docs/data/formal_mutants.json
