@@ -4,6 +4,7 @@
 // small setup with either back end (spec_stream, spec_stream_seq: the iCEBreaker's) the same way.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 #include "Vspec_shader.h"
@@ -43,6 +44,30 @@ void expect_pixels(const SetupModel& sm, const Model& core, const std::vector<Se
     }
     ASSERT_EQ(k, px.size()) << "extra pixels";
 }
+
+// The AXI4-Stream rule at the shader's output, checked every cycle (a ShaderDriver::run on_cycle, through
+// std::ref): a pixel offered without m_axis_tready is offered again unchanged, with its tlast and tuser.
+// `held` counts the cycles in which that was checked.
+struct OutputHolds {
+    bool stalled = false;
+    uint32_t data = 0;
+    unsigned last = 0, user = 0;
+    size_t held = 0;
+    template <class V>
+    void operator()(V& t) {
+        if (stalled) {
+            ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready";
+            ASSERT_EQ(t.m_axis_tdata, data);
+            ASSERT_EQ(t.m_axis_tlast, last);
+            ASSERT_EQ(t.m_axis_tuser, user);
+            ++held;
+        }
+        stalled = t.m_axis_tvalid && !t.m_axis_tready;
+        data = t.m_axis_tdata;
+        last = t.m_axis_tlast;
+        user = t.m_axis_tuser;
+    }
+};
 }  // namespace
 
 TEST(Shader, PipelinedEqualsModelsUnderStalls) {
@@ -77,28 +102,11 @@ TEST(Shader, AxiRulesHoldUnderBackpressure) {
     const SetupModel sm;
     std::mt19937_64 rng(53);
     ShaderDriver<Vspec_shader> d;
-    bool stalled = false, in_waiting = false;
-    uint32_t data = 0;
-    unsigned last = 0, user = 0;
-    size_t checked = 0;
-    auto probe = [&](Vspec_shader& t) {
-        if (stalled) {
-            ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready";
-            ASSERT_EQ(t.m_axis_tdata, data);
-            ASSERT_EQ(t.m_axis_tlast, last);
-            ASSERT_EQ(t.m_axis_tuser, user);
-            ++checked;
-        }
-        stalled = t.m_axis_tvalid && !t.m_axis_tready;
-        data = t.m_axis_tdata;
-        last = t.m_axis_tlast;
-        user = t.m_axis_tuser;
-        (void)in_waiting;
-    };
+    OutputHolds hold;
     const auto in = shader_inputs(rng, sm.format(), 800, 6);
-    const auto px = d.run(in, 0.8, 0.4, rng, 0, probe);
+    const auto px = d.run(in, 0.8, 0.4, rng, 0, std::ref(hold));
     expect_pixels(sm, Model(), in, px);
-    EXPECT_GT(checked, 1000u);
+    EXPECT_GT(hold.held, 1000u);
 }
 
 TEST(Shader, OnePixelPerClockWithThePipelinedSetup) {
@@ -198,29 +206,13 @@ TEST(Shader, SmallSeqEqualsModelsUnderStalls) {
     const Model core(config_format("up5k"));
     std::mt19937_64 rng(57);
     ShaderDriver<Vspec_shader_seq> d;
-    bool stalled = false;
-    uint32_t data = 0;
-    unsigned last = 0, user = 0;
-    size_t checked = 0;
-    auto probe = [&](Vspec_shader_seq& t) {
-        if (stalled) {
-            ASSERT_TRUE(t.m_axis_tvalid) << "tvalid dropped before tready";
-            ASSERT_EQ(t.m_axis_tdata, data);
-            ASSERT_EQ(t.m_axis_tlast, last);
-            ASSERT_EQ(t.m_axis_tuser, user);
-            ++checked;
-        }
-        stalled = t.m_axis_tvalid && !t.m_axis_tready;
-        data = t.m_axis_tdata;
-        last = t.m_axis_tlast;
-        user = t.m_axis_tuser;
-    };
+    OutputHolds hold;
     const double modes[][2] = {{1.0, 1.0}, {0.5, 0.5}, {1.0, 0.2}, {0.2, 0.05}};
     for (const auto& m : modes) {
         const auto in = shader_inputs(rng, sm.format(), 80, 40);
-        expect_pixels(sm, core, in, d.run(in, m[0], m[1], rng, 0, probe));
+        expect_pixels(sm, core, in, d.run(in, m[0], m[1], rng, 0, std::ref(hold)));
     }
-    EXPECT_GT(checked, 1000u);
+    EXPECT_GT(hold.held, 1000u);
     // reset with spans in flight: nothing of them comes out afterwards
     auto in = shader_inputs(rng, sm.format(), 6, 20);
     std::vector<ShaderPixel> px;
