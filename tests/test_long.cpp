@@ -1,6 +1,6 @@
 // test_long.cpp - make test-long (docs/verification.md): millions of random pixels through the Verilated
-// spec_stream and spec_unit against the bit-exact model, with random stalls on both sides, resets in the
-// middle of spans, back-to-back spans and inputs that must be ignored. Not part of make test.
+// spec_stream, spec_stream_seq and spec_unit against the bit-exact model, with random stalls on both sides,
+// resets in the middle of spans, back-to-back spans and inputs that must be ignored. Not part of make test.
 //
 // SPEC_LONG_PIXELS (default 10000000; make test-long passes 10^8) pixels through each core in the patent's configuration, a tenth of
 // that through spec_stream's up5k configuration and both cores in tuned mode; SPEC_LONG_SEED (default 1)
@@ -19,6 +19,9 @@
 #include <vector>
 
 #include "Vspec_stream.h"
+#include "Vspec_stream_seq.h"
+#include "Vspec_stream_seq_tuned.h"
+#include "Vspec_stream_seq_up5k.h"
 #include "Vspec_stream_l2p_up5k.h"
 #include "Vspec_stream_l4.h"
 #include "Vspec_stream_l4p.h"
@@ -238,6 +241,20 @@ TEST(Long, StreamTunedAgainstModel) {
     Format f;
     f.mode = Mode::tuned;
     stream_run<Vspec_stream_tuned>("spec_stream (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 4);
+}
+// spec_stream_seq, the compact back end (issue 15): the same ports, rules and pixels as spec_stream with
+// LANES = 1, so the same run; a tenth of the pixels in the up5k and tuned configurations
+TEST(Long, StreamSeqAgainstModel) {
+    stream_run<Vspec_stream_seq>("spec_stream_seq", Model(), kPixels, kSeed * 1000 + 8);
+}
+TEST(Long, StreamSeqUp5kAgainstModel) {
+    stream_run<Vspec_stream_seq_up5k>("spec_stream_seq (up5k)", Model(config_format("up5k")), kPixels / 10,
+                                      kSeed * 1000 + 9);
+}
+TEST(Long, StreamSeqTunedAgainstModel) {
+    Format f;
+    f.mode = Mode::tuned;
+    stream_run<Vspec_stream_seq_tuned>("spec_stream_seq (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 10);
 }
 
 // spec_unit: registers written in the cycle of Start or before it, Start in the cycle busy_o falls (back to
