@@ -50,7 +50,12 @@ module sync_fifo #(
                 if (rd) rdata <= mem[rptr[AW-1:0]];
             end
         end else begin : g_ram
-            reg [W-1:0] mem[0:(1 << AW) - 1];
+            // no_rw_check: the storage is never read at the address written in the same clock (a read needs
+            // 1 .. 2^AW - 1 items stored, when wptr and rptr differ; a push needs room, so never at 2^AW). Without
+            // it Yosys adds a collision bypass: a second register stage on the write port and the read register
+            // outside the block RAM (W + AW + ... flip-flops with no LUT in front). The check below stops a
+            // simulation that breaks the rule.
+            (* no_rw_check *) reg [W-1:0] mem[0:(1 << AW) - 1];
             always @(posedge clk) begin
                 if (push) mem[wptr[AW-1:0]] <= s_data;
                 if (rd) rdata <= mem[rptr[AW-1:0]];
@@ -74,6 +79,15 @@ module sync_fifo #(
             ready_q <= (cnt <= ROOM_LAST);
         end
     end
+
+`ifndef SYNTHESIS
+    always @(posedge clk) begin
+        if (rst_n && push && rd && wptr[AW-1:0] == rptr[AW-1:0]) begin
+            $display("sync_fifo: a read at the address written in the same clock (%m): an RTL bug");
+            $fatal(1);
+        end
+    end
+`endif
 
     generate
         if (QUEUE != 1 && QUEUE != 3) begin : g_bad_queue
