@@ -291,27 +291,29 @@ module board_core_fb #(
         base_next <= times_gw(next_line);
         next_active <= (v < V_ACTIVE[Y_W-1:0] - 1'b1) || (v == V_TOTAL[Y_W-1:0] - 1'b1);
     end
-    reg [47:0] cur, nxt;
+    // cur: the group being shown. The next group is the store's own group register: a fetch is issued at a group
+    // boundary, its words land in group well before the next boundary (reads go first), and group holds them
+    // until the fetch issued there writes it again, a few clocks after cur took it (no copy in between)
+    reg [47:0] cur;
     wire [X_W-4:0] g_here = h[X_W-1:3];
     wire [X_W-4:0] g_fetch = g_here + {{(X_W - 5) {1'b0}}, 2'd2};   // the group two ahead
     localparam [X_W-4:0] GW_G = GW[X_W-4:0];
     always @(posedge clk) begin
         fetch <= 1'b0;
-        if (group_valid) nxt <= group;
         if (pix_ce) begin
             if (h == H_ACTIVE[X_W-1:0] && next_active) begin
                 fetch <= 1'b1;
                 fetch_group <= base_next;
             end
             if (h == H_TOTAL[X_W-1:0] - 1'b1) begin
-                cur <= nxt;
+                cur <= group;
                 if (next_active) begin
                     fetch <= 1'b1;
                     fetch_group <= base_next + 1'b1;
                 end
             end
             if (h < H_ACTIVE[X_W-1:0] && h[2:0] == 3'd7) begin
-                cur <= nxt;
+                cur <= group;
                 if (v < V_ACTIVE[Y_W-1:0] && g_fetch < GW_G) begin
                     fetch <= 1'b1;
                     fetch_group <= base_cur + {{(P_W - 2 - (X_W - 3)) {1'b0}}, g_fetch};
@@ -334,6 +336,6 @@ module board_core_fb #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, fetch_busy, px_x[X_W-1:T_W]};
+    assign unused = &{1'b0, fetch_busy, group_valid, px_x[X_W-1:T_W]};
 endmodule
 `default_nettype wire
