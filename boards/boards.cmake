@@ -79,6 +79,9 @@ verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt
   PREFIX Vsphere_spans_small VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=1 -GSQRT_STEPS=1 -GK=16
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_640x480.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_16.hex\"")
 verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
+  PREFIX Vsphere_spans_serial VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=1 -GSQRT_STEPS=1 -GK=16 -GSERIAL=1
+  "-GSCENE_FILE=\"${BOARD_GEN}/scene_640x480.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_16.hex\"")
+verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
   PREFIX Vsphere_spans_fast VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=9 -GSQRT_STEPS=2 -GK=32
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_1280x720.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_32.hex\"")
 verilate(vboard_modules SOURCES ${BC}/tmds_encoder.v TOP_MODULE tmds_encoder PREFIX Vtmds_encoder

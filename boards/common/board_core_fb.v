@@ -41,6 +41,7 @@ module board_core_fb #(
     parameter COS_HALF_E = 15396,
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
+    parameter SPANS_SERIAL = 0,        // sphere_spans' SERIAL: 1 = one token in its stages at a time (fewer cells)
     parameter SHADER_SMALL = 1,
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
@@ -162,7 +163,7 @@ module board_core_fb #(
 
     sphere_spans #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .K(SPLIT_K), .ZF(5), .X_W(X_W), .Y_W(Y_W), .MUL_STEPS(MUL_STEPS),
-        .SQRT_STEPS(SQRT_STEPS), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE)
+        .SQRT_STEPS(SQRT_STEPS), .SERIAL(SPANS_SERIAL), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE)
     ) u_spans (
         .clk(clk), .rst_n(rst_n), .start(sp_start), .y(y), .busy(sp_busy), .m_valid(sp_valid),
         .m_ready(sp_ready), .m_obj(sp_obj), .m_x0(sp_x0), .m_l(sp_l), .m_n1(sp_n1), .m_n2(sp_n2)
