@@ -102,6 +102,8 @@ verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vs
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q1
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=1)
+verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q0
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=0)
 verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
   VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
 verilate(vboard_modules SOURCES ${BC}/frame_store.v TOP_MODULE frame_store PREFIX Vframe_store

@@ -53,7 +53,7 @@ module board_core_fb #(
     // distributed RAM (the ECP5-25F's block RAM is the frame store's)
     parameter STORE_PACKED = 0,
     parameter FIFO_LUTRAM = 0,
-    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 saves the queues' output registers (the iCEBreaker)
+    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 or 0 save the queues' output registers (0: the iCEBreaker)
     parameter META_AW = 8,             // shade_passes' sub-span queue: 2 keeps its 4 words in flip-flops, not a
                                        // block RAM (the shader holds a few sub-spans at a time)
     parameter COMPOSE_STEPS = 3        // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
