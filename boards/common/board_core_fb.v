@@ -54,7 +54,7 @@ module board_core_fb #(
     parameter STORE_PACKED = 0,
     parameter FIFO_LUTRAM = 0,
     parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 or 0 save the queues' output registers (0: the iCEBreaker)
-    parameter META_AW = 8,             // shade_passes' sub-span queue: 2 keeps its 4 words in flip-flops, not a
+    parameter META_AW = 8,             // shade_passes' sub-span queue: 1 keeps its 2 words in flip-flops, not a
                                        // block RAM (the shader holds a few sub-spans at a time)
     parameter COMPOSE_STEPS = 3        // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
 ) (
@@ -271,10 +271,11 @@ module board_core_fb #(
             );
         end
     endgenerate
-    // the buffer lines of this display line and the next, as word offsets (registered in two steps from v,
-    // which is stable through a line)
+    // the next display line's buffer line, as a word offset (registered in two steps from v, which is stable
+    // through a line). A display line's groups are fetched in order, base + 0 and base + 1 at the end of the line
+    // before, base + 2 .. GW - 1 during it, so every fetch after the first is the last one's group + 1.
     reg [Y_W-1:0] next_line;
-    reg [P_W-3:0] base_cur, base_next;
+    reg [P_W-3:0] base_next;
     // line * GW by shifts and adds over GW's set bits (a constant: no multiplier, no DSP)
     function [P_W-3:0] times_gw;
         input [Y_W-1:0] line;
@@ -288,7 +289,6 @@ module board_core_fb #(
     reg next_active;                   // the next display line shows the buffer
     always @(posedge clk) begin
         next_line <= (v >= V_ACTIVE[Y_W-1:0] - 1'b1) ? {Y_W{1'b0}} : (v + 1'b1) >> 1;
-        base_cur <= times_gw({1'b0, v[Y_W-1:1]});
         base_next <= times_gw(next_line);
         next_active <= (v < V_ACTIVE[Y_W-1:0] - 1'b1) || (v == V_TOTAL[Y_W-1:0] - 1'b1);
     end
@@ -310,14 +310,14 @@ module board_core_fb #(
                 cur <= group;
                 if (next_active) begin
                     fetch <= 1'b1;
-                    fetch_group <= base_next + 1'b1;
+                    fetch_group <= fetch_group + 1'b1;
                 end
             end
             if (h < H_ACTIVE[X_W-1:0] && h[2:0] == 3'd7) begin
                 cur <= group;
                 if (v < V_ACTIVE[Y_W-1:0] && g_fetch < GW_G) begin
                     fetch <= 1'b1;
-                    fetch_group <= base_cur + {{(P_W - 2 - (X_W - 3)) {1'b0}}, g_fetch};
+                    fetch_group <= fetch_group + 1'b1;
                 end
             end
         end
