@@ -79,6 +79,9 @@ verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt
   PREFIX Vsphere_spans_small VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=1 -GSQRT_STEPS=1 -GK=16
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_640x480.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_16.hex\"")
 verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
+  PREFIX Vsphere_spans_serial VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=1 -GSQRT_STEPS=1 -GK=16 -GSERIAL=1
+  "-GSCENE_FILE=\"${BOARD_GEN}/scene_640x480.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_16.hex\"")
+verilate(vboard_modules SOURCES ${BC}/sphere_spans.v ${BC}/seq_mul.v ${BC}/isqrt.v TOP_MODULE sphere_spans
   PREFIX Vsphere_spans_fast VERILATOR_ARGS ${BOARD_MOD_ARGS} -GMUL_STEPS=9 -GSQRT_STEPS=2 -GK=32
   "-GSCENE_FILE=\"${BOARD_GEN}/scene_1280x720.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_32.hex\"")
 verilate(vboard_modules SOURCES ${BC}/tmds_encoder.v TOP_MODULE tmds_encoder PREFIX Vtmds_encoder
@@ -99,6 +102,8 @@ verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vs
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q1
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=1)
+verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q0
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=0)
 verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
   VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
 verilate(vboard_modules SOURCES ${BC}/frame_store.v TOP_MODULE frame_store PREFIX Vframe_store

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "Vsphere_spans_fast.h"
+#include "Vsphere_spans_serial.h"
 #include "Vsphere_spans_small.h"
 #include "Vtmds_encoder.h"
 #include "Vtmds_serializer.h"
@@ -89,6 +90,16 @@ TEST(SphereSpans, SmallMatchesModelEveryLine) {
     const BoardScene s = make_board_scene("640x480", 16);
     check_scene<Vsphere_spans_small>(s, 1.0, 1200);
     check_scene<Vsphere_spans_small>(s, 0.3, 0);
+}
+
+// SERIAL = 1 (the iCEBreaker's: one token in the stages at a time, the stages read x0, DY, p, DX and W2 from stage
+// A1's registers): the same sub-spans on every line, with and without a stalling sink. Slower than the
+// overlapped stages (2312 clocks for the busiest line here, 1200 overlapped); the frame buffer designs do not race
+// the beam, and their shader takes a few thousand clocks for each sub-span.
+TEST(SphereSpans, SerialMatchesModelEveryLine) {
+    const BoardScene s = make_board_scene("640x480", 16);
+    check_scene<Vsphere_spans_serial>(s, 1.0, 2400);
+    check_scene<Vsphere_spans_serial>(s, 0.3, 0);
 }
 
 // The same for 1280 x 720 with 32 split points and the ECP5's 720p arithmetic (single-cycle products, two root

@@ -11,6 +11,7 @@
 #include "Vlight_gen.h"
 #include "Vseq_mul.h"
 #include "Vsync_fifo.h"
+#include "Vsync_fifo_q0.h"
 #include "Vsync_fifo_q1.h"
 #include "Vvideo_timing.h"
 #include "board_dut.h"
@@ -230,8 +231,8 @@ TEST(BoardComposeSeq, MatchesModelUnderStalls) {
 }
 
 // sync_fifo.v (8 deep + its output queue) under random valid/ready: nothing lost, duplicated or reordered;
-// with both sides always ready, one item per clock (QUEUE = 3) or two in three clocks (QUEUE = 1, the
-// iCEBreaker's); tvalid held until taken.
+// with both sides always ready, one item per clock (QUEUE = 3 or 0) or two in three clocks (QUEUE = 1);
+// tvalid held until taken.
 template <class Dut>
 static void fifo_in_order(int max_cycles_at_full_rate) {
     for (double p : {1.0, 0.7, 0.3}) {
@@ -262,6 +263,9 @@ static void fifo_in_order(int max_cycles_at_full_rate) {
 TEST(BoardSyncFifo, InOrderUnderRandomStalls) { fifo_in_order<Vsync_fifo>(5010); }
 
 TEST(BoardSyncFifo, OneRegisterQueueInOrderUnderRandomStalls) { fifo_in_order<Vsync_fifo_q1>(7510); }
+
+// QUEUE = 0 (the iCEBreaker's): the block RAM's read register is the head; one item a clock
+TEST(BoardSyncFifo, NoQueueInOrderUnderRandomStalls) { fifo_in_order<Vsync_fifo_q0>(5010); }
 
 // light_gen.v against board_model's light_q for every one of the 256 frames.
 TEST(BoardLightGen, EveryFrameMatchesModel) {

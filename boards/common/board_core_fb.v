@@ -41,6 +41,7 @@ module board_core_fb #(
     parameter COS_HALF_E = 15396,
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
+    parameter SPANS_SERIAL = 0,        // sphere_spans' SERIAL: 1 = one token in its stages at a time (fewer cells)
     parameter SHADER_SMALL = 1,
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
@@ -52,8 +53,8 @@ module board_core_fb #(
     // distributed RAM (the ECP5-25F's block RAM is the frame store's)
     parameter STORE_PACKED = 0,
     parameter FIFO_LUTRAM = 0,
-    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 saves the queues' output registers (the iCEBreaker)
-    parameter META_AW = 8,             // shade_passes' sub-span queue: 2 keeps its 4 words in flip-flops, not a
+    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 or 0 save the queues' output registers (0: the iCEBreaker)
+    parameter META_AW = 8,             // shade_passes' sub-span queue: 1 keeps its 2 words in flip-flops, not a
                                        // block RAM (the shader holds a few sub-spans at a time)
     parameter COMPOSE_STEPS = 3        // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
 ) (
@@ -162,7 +163,7 @@ module board_core_fb #(
 
     sphere_spans #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .K(SPLIT_K), .ZF(5), .X_W(X_W), .Y_W(Y_W), .MUL_STEPS(MUL_STEPS),
-        .SQRT_STEPS(SQRT_STEPS), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE)
+        .SQRT_STEPS(SQRT_STEPS), .SERIAL(SPANS_SERIAL), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE)
     ) u_spans (
         .clk(clk), .rst_n(rst_n), .start(sp_start), .y(y), .busy(sp_busy), .m_valid(sp_valid),
         .m_ready(sp_ready), .m_obj(sp_obj), .m_x0(sp_x0), .m_l(sp_l), .m_n1(sp_n1), .m_n2(sp_n2)
@@ -270,10 +271,11 @@ module board_core_fb #(
             );
         end
     endgenerate
-    // the buffer lines of this display line and the next, as word offsets (registered in two steps from v,
-    // which is stable through a line)
+    // the next display line's buffer line, as a word offset (registered in two steps from v, which is stable
+    // through a line). A display line's groups are fetched in order, base + 0 and base + 1 at the end of the line
+    // before, base + 2 .. GW - 1 during it, so every fetch after the first is the last one's group + 1.
     reg [Y_W-1:0] next_line;
-    reg [P_W-3:0] base_cur, base_next;
+    reg [P_W-3:0] base_next;
     // line * GW by shifts and adds over GW's set bits (a constant: no multiplier, no DSP)
     function [P_W-3:0] times_gw;
         input [Y_W-1:0] line;
@@ -287,34 +289,35 @@ module board_core_fb #(
     reg next_active;                   // the next display line shows the buffer
     always @(posedge clk) begin
         next_line <= (v >= V_ACTIVE[Y_W-1:0] - 1'b1) ? {Y_W{1'b0}} : (v + 1'b1) >> 1;
-        base_cur <= times_gw({1'b0, v[Y_W-1:1]});
         base_next <= times_gw(next_line);
         next_active <= (v < V_ACTIVE[Y_W-1:0] - 1'b1) || (v == V_TOTAL[Y_W-1:0] - 1'b1);
     end
-    reg [47:0] cur, nxt;
+    // cur: the group being shown. The next group is the store's own group register: a fetch is issued at a group
+    // boundary, its words land in group well before the next boundary (reads go first), and group holds them
+    // until the fetch issued there writes it again, a few clocks after cur took it (no copy in between)
+    reg [47:0] cur;
     wire [X_W-4:0] g_here = h[X_W-1:3];
     wire [X_W-4:0] g_fetch = g_here + {{(X_W - 5) {1'b0}}, 2'd2};   // the group two ahead
     localparam [X_W-4:0] GW_G = GW[X_W-4:0];
     always @(posedge clk) begin
         fetch <= 1'b0;
-        if (group_valid) nxt <= group;
         if (pix_ce) begin
             if (h == H_ACTIVE[X_W-1:0] && next_active) begin
                 fetch <= 1'b1;
                 fetch_group <= base_next;
             end
             if (h == H_TOTAL[X_W-1:0] - 1'b1) begin
-                cur <= nxt;
+                cur <= group;
                 if (next_active) begin
                     fetch <= 1'b1;
-                    fetch_group <= base_next + 1'b1;
+                    fetch_group <= fetch_group + 1'b1;
                 end
             end
             if (h < H_ACTIVE[X_W-1:0] && h[2:0] == 3'd7) begin
-                cur <= nxt;
+                cur <= group;
                 if (v < V_ACTIVE[Y_W-1:0] && g_fetch < GW_G) begin
                     fetch <= 1'b1;
-                    fetch_group <= base_cur + {{(P_W - 2 - (X_W - 3)) {1'b0}}, g_fetch};
+                    fetch_group <= fetch_group + 1'b1;
                 end
             end
         end
@@ -334,6 +337,6 @@ module board_core_fb #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, fetch_busy, px_x[X_W-1:T_W]};
+    assign unused = &{1'b0, fetch_busy, group_valid, px_x[X_W-1:T_W]};
 endmodule
 `default_nettype wire

@@ -8,8 +8,11 @@
 // (SIN_FILE: 65 words round(16384 sin(pi i / 128)), i = 0..64), times the constants SIN_E, SIN_HALF_E
 // (Q1.14) with a shift-and-add multiplier, rounded: round(a * b / 2^14); the z components are COS_E and
 // COS_HALF_E themselves.
-// Handshake: start (with f) is taken while busy = 0; busy stays 1 for 4 x 16 cycles; l_* and h_* change
-// only when busy falls (they hold the previous frame's light until then).
+// One table read and one multiplier serve the four products in turn (the table's index is chosen before the
+// read).
+// Handshake: start (with f) is taken while busy = 0; busy stays 1 for 4 x 16 cycles or so;
+// l_x, l_y, h_x, h_y take their new values one after the other while busy = 1 (each as its product is done;
+// l_z and h_z are constants), and hold while busy = 0. The callers do not read them while busy.
 // Reset: rst_n is synchronous, active low: idle; the outputs are the light of no frame until the first run.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -36,8 +39,9 @@ module light_gen #(
     wire [7:0] tc = t + 8'd64;
     wire [6:0] i_s = t[6] ? 7'd64 - {1'b0, t[5:0]} : {1'b0, t[5:0]};
     wire [6:0] i_c = tc[6] ? 7'd64 - {1'b0, tc[5:0]} : {1'b0, tc[5:0]};
-    wire [14:0] mag_s = quarter[i_s];
-    wire [14:0] mag_c = quarter[i_c];
+    reg [2:0] step;                // 0: idle, 1..4: the four products
+    // the product started at step s (0..3): cos t (s even) or sin t (s odd), one table read
+    wire [14:0] mag = quarter[step[0] ? i_s : i_c];
     wire neg_s = t[7];
     wire neg_c = tc[7];
 
@@ -54,8 +58,6 @@ module light_gen #(
     // round(p / 2^14) with the sign put back; |result| <= 16384
     wire [15:0] mag_r = mul_p[29:14] + {15'd0, mul_p[13]};
 
-    reg [2:0] step;                // 0: idle, 1..4: the four products
-    reg signed [15:0] lx, ly, hx;  // results so far
     reg neg;
     wire signed [15:0] res = neg ? -$signed(mag_r) : $signed(mag_r);
 
@@ -73,21 +75,18 @@ module light_gen #(
         end else begin
             if (step == 3'd0 || mul_done) begin
                 case (step)
-                    3'd1: lx <= res;
-                    3'd2: ly <= res;
-                    3'd3: hx <= res;
+                    3'd1: l_x <= res;
+                    3'd2: l_y <= res;
+                    3'd3: h_x <= res;
+                    3'd4: h_y <= res;
                     default: ;
                 endcase
                 if (step == 3'd4) begin
-                    l_x <= lx;
-                    l_y <= ly;
                     l_z <= COS_E;
-                    h_x <= hx;
-                    h_y <= res;
                     h_z <= COS_HALF_E;
                     busy <= 1'b0;
                 end else begin
-                    mul_a <= {1'b0, (step[0] ? mag_s : mag_c)};
+                    mul_a <= {1'b0, mag};
                     mul_b <= (step < 3'd2) ? SIN_E : SIN_HALF_E;
                     neg <= step[0] ? neg_s : neg_c;
                     mul_start <= 1'b1;

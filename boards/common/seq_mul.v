@@ -2,7 +2,7 @@
 // (B_W / STEPS_PER_CLK cycles). Small where multipliers are scarce (iCE40 UP5K: 8 DSPs, all wanted by
 // the shader); set STEPS_PER_CLK = B_W for a single-cycle array.
 // Handshake: start (with a, b) is taken while busy = 0, and the first STEPS_PER_CLK bits are used in that
-// cycle; busy is 1 for the B_W / STEPS_PER_CLK - 1 cycles after it; done pulses in the cycle after the last
+// cycle; the caller holds a from start until done (every caller's a is a register that does: no copy here); busy is 1 for the B_W / STEPS_PER_CLK - 1 cycles after it; done pulses in the cycle after the last
 // step (the cycle after start when STEPS_PER_CLK = B_W), when p is the product; p is held until the next
 // start.
 // Reset: rst_n is synchronous, active low: idle, no done.
@@ -35,12 +35,10 @@ module seq_mul #(
         end
     endgenerate
 
-    reg [A_W-1:0] a_q;
     reg [B_W-1:0] b_q;          // multiplier bits not yet used, most significant first
     reg [C_W-1:0] left;
-    // STEPS_PER_CLK steps of shift and add, from (p_i, a_i, b_i): at start from (0, a, b), later from the
+    // STEPS_PER_CLK steps of shift and add, from (p_i, a, b_i): at start from (0, a, b), later from the
     // registers
-    wire [A_W-1:0] a_i = busy ? a_q : a;
     wire [B_W-1:0] b_i = busy ? b_q : b;
     wire [A_W+B_W-1:0] p_i = busy ? p : {(A_W + B_W) {1'b0}};
     reg [A_W+B_W-1:0] p_n;
@@ -50,7 +48,7 @@ module seq_mul #(
         p_n = p_i;
         b_n = b_i;
         for (k = 0; k < STEPS_PER_CLK; k = k + 1) begin
-            p_n = {p_n[A_W+B_W-2:0], 1'b0} + (b_n[B_W-1] ? {{B_W{1'b0}}, a_i} : {(A_W + B_W) {1'b0}});
+            p_n = {p_n[A_W+B_W-2:0], 1'b0} + (b_n[B_W-1] ? {{B_W{1'b0}}, a} : {(A_W + B_W) {1'b0}});
             b_n = {b_n[B_W-2:0], 1'b0};
         end
     end
@@ -66,7 +64,6 @@ module seq_mul #(
             done <= 1'b0;
             if (!busy) begin
                 if (start) begin
-                    a_q <= a;
                     b_q <= b_n;
                     p <= (CYCLES == 1) ? p_full : p_n;
                     left <= CYCLES[C_W-1:0] - {{(C_W - 1) {1'b0}}, 1'b1};

@@ -25,7 +25,7 @@ module shade_passes #(
     parameter LOG2_FILE = "",
     parameter EXP2_FILE = "",
     parameter FIFO_LUTRAM = 0,         // sync_fifo's LUTRAM: the queues in distributed RAM
-    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: its output queue's entries (1 or 3)
+    parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: its output queue's entries (0, 1 or 3)
     parameter META_AW = 8              // the sub-spans' queue (object, x0): 2^META_AW + 2 or + 3 entries
 ) (
     input  wire               clk,

@@ -19,6 +19,10 @@
 // clock: m * v_j and DX^2), the square root (digit by digit, SQRT_STEPS bits per clock) and the emitter.
 // A split point costs about max(2 (9 / MUL_STEPS + 2), 14 / SQRT_STEPS + 2) clocks; a sphere's line adds a
 // square root for its chord.
+// SERIAL = 1 (where logic cells are short: the iCEBreaker, whose shader takes thousands of clocks a sub-span):
+// stage A1 starts a sphere or a split point only when the stages after it are empty, so a token's x0, DY, p, DX
+// and W2 stay in A1's registers while it runs, and the stages read them there instead of carrying copies
+// (about 5 x 50 flip-flops fewer). The same sub-spans, a few clocks more per point.
 // Reset: rst_n is synchronous, active low: idle, no output.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -31,6 +35,7 @@ module sphere_spans #(
     parameter Y_W = 10,
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
+    parameter SERIAL = 0,              // 1: one token in the stages at a time (see above)
     parameter SCENE_FILE = "",
     parameter SPLIT_FILE = ""
 ) (
@@ -54,7 +59,8 @@ module sphere_spans #(
     localparam J_W = $clog2(K + 1);
 
     generate
-        if (N_OBJ < 1 || N_OBJ > (1 << OBJ_W) || K < 1 || ZF < 0 || ZF > 6 || Y_W > 10 || X_W != 11)
+        if (N_OBJ < 1 || N_OBJ > (1 << OBJ_W) || K < 1 || ZF < 0 || ZF > 6 || Y_W > 10 || X_W != 11 ||
+            (SERIAL != 0 && SERIAL != 1))
         begin : g_bad_params
             initial begin
                 $display("sphere_spans: parameters out of range (%m)");
@@ -133,6 +139,9 @@ module sphere_spans #(
     wire unused_a;
     assign unused_a = &{1'b0, mul_busy, mul_p[2*R_W-1:R_W+F], pv[F-1:0]};
 
+    // SERIAL: a sphere (A_OBJ) or a point (A_P) starts only when no token is in the stages after A1: x0, dy, w2
+    // (set after A_OBJ), p and dx (set after A_P) then hold while their token runs
+    wire a1_hold = (SERIAL != 0) && (a2_v || b_v || sq_run || c_v);
     always @(posedge clk) begin
         mul_start <= 1'b0;
         if (!rst_n) begin
@@ -147,7 +156,7 @@ module sphere_spans #(
                     last_obj <= (N_OBJ == 1);
                     st <= A_OBJ;
                 end
-                A_OBJ: begin
+                A_OBJ: if (!a1_hold) begin
                     cur <= scene[obj[OBJ_W-1:0]];
                     st <= A_DY;
                 end
@@ -203,7 +212,7 @@ module sphere_spans #(
                     first <= 1'b1;
                     st <= A_P;
                 end
-                A_P: begin
+                A_P: if (!a1_hold) begin
                     mul_a <= m;
                     mul_b <= split[j];
                     mul_start <= 1'b1;
@@ -274,10 +283,10 @@ module sphere_spans #(
     wire mul2_busy, mul2_done;
     wire [2*R_W-1:0] mul2_p;
     wire a2_point = a2_tok[A2_W-1];
-    wire signed [R_W+1:0] a2_dx = a2_tok[2*R_W +: R_W + 2];
+    wire signed [R_W+1:0] a2_dx = (SERIAL != 0) ? dx : a2_tok[2*R_W +: R_W + 2];
     wire [R_W+1:0] a2_adx_d = a2_dx[R_W+1] ? -a2_dx : a2_dx;
     reg [R_W+1:0] a2_adx;              // |DX|, registered before the multiplier
-    wire [2*R_W-1:0] a2_w2 = a2_tok[2*R_W-1:0];
+    wire [2*R_W-1:0] a2_w2 = (SERIAL != 0) ? w2 : a2_tok[2*R_W-1:0];
     seq_mul #(.A_W(R_W), .B_W(R_W), .STEPS_PER_CLK(MUL_STEPS)) u_mul2 (
         .clk(clk), .rst_n(rst_n), .start(mul2_start), .a(a2_adx[R_W-1:0]), .b(a2_adx[R_W-1:0]), .busy(mul2_busy),
         .done(mul2_done), .p(mul2_p)
@@ -361,16 +370,19 @@ module sphere_spans #(
     // ---- stage C: sub-spans from consecutive points -----------------------------------------------------
     wire c_first = c_tok[C_W-1];
     wire [OBJ_W-1:0] c_obj = c_tok[C_W-2 -: OBJ_W];
-    wire [X_W-1:0] c_x0 = c_tok[C_W-2-OBJ_W -: X_W];
-    wire signed [12:0] c_dy = c_tok[C_W-2-OBJ_W-X_W -: 13];
-    wire [R_W-1:0] c_p = c_tok[Z_W+R_W+2 +: R_W];
-    wire signed [R_W+1:0] c_dx = c_tok[Z_W +: R_W + 2];
+    wire [X_W-1:0] c_x0 = (SERIAL != 0) ? x0 : c_tok[C_W-2-OBJ_W -: X_W];
+    wire signed [12:0] c_dy = (SERIAL != 0) ? dy : c_tok[C_W-2-OBJ_W-X_W -: 13];
+    wire [R_W-1:0] c_p = (SERIAL != 0) ? p : c_tok[Z_W+R_W+2 +: R_W];
+    wire signed [R_W+1:0] c_dx = (SERIAL != 0) ? dx : c_tok[Z_W +: R_W + 2];
+    // (SERIAL: the tokens' copies of x0, dy, p, dx and w2 are not read; synthesis removes them)
+    wire unused_c;
+    assign unused_c = &{1'b0, a2_tok, c_tok};
     wire [Z_W-1:0] c_z = c_tok[Z_W-1:0];
     // the normal at the point: (dx, dy, z) * 2^ZF, 16 bits each
     wire signed [15:0] dx16 = {{(16 - R_W - 2) {c_dx[R_W+1]}}, c_dx};
     wire signed [15:0] dy16 = {{3{c_dy[12]}}, c_dy};
     wire [47:0] n_cur = {{(16 - Z_W) {1'b0}}, c_z, dy16 <<< ZF, dx16 <<< ZF};
-    reg [47:0] n_prev;
+    // the previous point's normal is m_n2: every take loads it (a chord's first point too, while m_valid = 0)
     reg [R_W-1:0] cp_prev;
     assign c_take = c_v && !m_valid;   // the output register is empty (m_ready does not reach further back)
     always @(posedge clk) begin
@@ -379,15 +391,14 @@ module sphere_spans #(
         end else begin
             if (m_valid && m_ready) m_valid <= 1'b0;
             if (c_take) begin
-                n_prev <= n_cur;
                 cp_prev <= c_p;
+                m_n2 <= n_cur;
                 if (!c_first) begin
                     m_valid <= 1'b1;
                     m_obj <= c_obj;
                     m_x0 <= c_x0 + {{(X_W - R_W) {1'b0}}, cp_prev};
                     m_l <= {{(10 - R_W) {1'b0}}, c_p - cp_prev};
-                    m_n1 <= n_prev;
-                    m_n2 <= n_cur;
+                    m_n1 <= m_n2;
                 end
             end
         end

@@ -9,6 +9,9 @@
 // queue; the storage's read register holds its item until the output register takes it, and the read decision
 // still depends on registers only. Same order and contents, capacity 2^AW + 2, at most two items every three
 // clocks out (one a clock with QUEUE = 3); W x 2 flip-flops and their multiplexers fewer.
+// QUEUE = 0 (the smallest): no output register; the storage's read register is the head (m_data), and the
+// next item is read in the clock the head is taken, so the read decision depends on this cycle's m_ready (a
+// combinational path from the sink into the block RAM's read enable). One item a clock, capacity 2^AW + 1.
 // Reset: rst_n is synchronous, active low: empty; s_ready is 0 in the cycle after reset.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -16,7 +19,7 @@ module sync_fifo #(
     parameter W = 16,
     parameter AW = 8,         // storage depth 2^AW
     parameter LUTRAM = 0,     // 1: the storage in distributed RAM (ram_style), where block RAM is short
-    parameter QUEUE = 3       // output queue entries: 3 (one item a clock) or 1 (two items in three clocks)
+    parameter QUEUE = 3       // output queue entries: 3 (one item a clock), 1 (two items in three clocks), 0 (see above)
 ) (
     input  wire         clk,
     input  wire         rst_n,
@@ -29,7 +32,6 @@ module sync_fifo #(
 );
     reg [AW:0] wptr, rptr;               // storage pointers, one extra bit tells full from empty
     reg [W-1:0] rdata;
-    reg rd_pending;                      // rdata holds an item read from the storage
     reg ready_q;
     reg [AW:0] cnt;                      // items in the storage
     assign s_ready = ready_q;
@@ -50,7 +52,12 @@ module sync_fifo #(
                 if (rd) rdata <= mem[rptr[AW-1:0]];
             end
         end else begin : g_ram
-            reg [W-1:0] mem[0:(1 << AW) - 1];
+            // no_rw_check: the storage is never read at the address written in the same clock (a read needs
+            // 1 .. 2^AW - 1 items stored, when wptr and rptr differ; a push needs room, so never at 2^AW). Without
+            // it Yosys adds a collision bypass: a second register stage on the write port and the read register
+            // outside the block RAM (W + AW + ... flip-flops with no LUT in front). The check below stops a
+            // simulation that breaks the rule.
+            (* no_rw_check *) reg [W-1:0] mem[0:(1 << AW) - 1];
             always @(posedge clk) begin
                 if (push) mem[wptr[AW-1:0]] <= s_data;
                 if (rd) rdata <= mem[rptr[AW-1:0]];
@@ -75,11 +82,30 @@ module sync_fifo #(
         end
     end
 
-    generate
-        if (QUEUE != 1 && QUEUE != 3) begin : g_bad_queue
-            sync_fifo_parameter_error_QUEUE_must_be_1_or_3 check_the_QUEUE_parameter ();
+`ifndef SYNTHESIS
+    always @(posedge clk) begin
+        if (rst_n && push && rd && wptr[AW-1:0] == rptr[AW-1:0]) begin
+            $display("sync_fifo: a read at the address written in the same clock (%m): an RTL bug");
+            $fatal(1);
         end
-        if (QUEUE == 1) begin : g_q1
+    end
+`endif
+
+    generate
+        if (QUEUE != 0 && QUEUE != 1 && QUEUE != 3) begin : g_bad_queue
+            sync_fifo_parameter_error_QUEUE_must_be_0_1_or_3 check_the_QUEUE_parameter ();
+        end
+        if (QUEUE == 0) begin : g_q0
+            reg head_v;                          // rdata holds the head item
+            assign rd = st_full && (!head_v || m_ready);
+            always @(posedge clk) begin
+                if (!rst_n) head_v <= 1'b0;
+                else head_v <= rd | (head_v & ~m_ready);
+            end
+            assign m_valid = head_v;
+            assign m_data = rdata;
+        end else if (QUEUE == 1) begin : g_q1
+            reg rd_pending;                      // rdata holds an item read from the storage
             // rd_pending: rdata holds an item not yet taken (it stays there while the output register is full)
             reg [W-1:0] q0;
             reg q0_v;
@@ -100,6 +126,7 @@ module sync_fifo #(
             assign m_valid = q0_v;
             assign m_data = q0;
         end else begin : g_q3
+            reg rd_pending;                      // rdata holds an item read from the storage
             reg [W-1:0] q0, q1, q2;              // output queue: q0 is the head
             reg q0_v, q1_v, q2_v;
             wire pop = q0_v & m_ready;

@@ -72,7 +72,7 @@ module icebreaker_top #(
         .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-        .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1), .SHADER_BACKEND(1), .FIFO_QUEUE(1), .META_AW(2), .COMPOSE_STEPS(1),
+        .MUL_STEPS(1), .SQRT_STEPS(1), .SPANS_SERIAL(1), .SHADER_SMALL(1), .SHADER_BACKEND(1), .FIFO_QUEUE(0), .META_AW(1), .COMPOSE_STEPS(1),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .error(error),
