@@ -41,6 +41,15 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
           "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
 
+# The small setup's job (setup_engine): the same descriptor widths but n 10 bits (spec_setup_backend's program has
+# ten multiplication steps; ROM 9 then needs a wider scale) and the smallest setup format the generator accepts
+# (setuprom: 8 micro-rotations, 22-bit coordinates, 20-bit angle fractions, 4 + 4-bit table addresses).
+WIDTHS_N10 = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "10", "--l-w", "3",
+              "--scale-w", "9", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
+SETUP_SMALL = ["--f", "22", "--iters", "8", "--zf", "20", "--lf", "12", "--ef", "12", "--tb", "4", "--rb", "4",
+               "--gain-frac", "8", "--flat-log2", "-10"]
+
+
 def core_files(rtl_dir):
     """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
     with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
@@ -104,6 +113,24 @@ JOBS = {
         extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
         cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=42, cover=42),
 }
+# The small setup (spec_setup with ITERATIVE = 1: spec_setup_engine, spec_setup_backend; formal/fv_setup_engine.v):
+# the handshake, the accounting and a ranking key that grows while a span is in flight (no deadlock), for traces
+# of any length by k-induction. k = 3: the output words' stability needs the two memories' read registers (the
+# engine's vector memory, the back end's register file) to have read the same word for two cycles, which the
+# induction sees in three states without the memories' words being named. A span takes over a thousand cycles
+# at these widths: the bounded base case and the covers reach the vectors' load and the first runs only.
+JOBS["setup_engine"] = dict(
+    core="spec_setup", wrapper="fv_setup_engine", shader=True, rom="rom_n10", widths=WIDTHS_N10,
+    setup_widths=SETUP_SMALL, chparam={"ITERATIVE": 1},
+    expose=["g_engine.u_engine." + w for w in (
+        "st", "ph", "it", "rph", "qt", "run", "run_tests", "ld_v", "ld_c", "be_start", "bad", "rule_reg", "opp",
+        "v_ra", "v_we", "n_reg", "l_reg")] + ["g_engine.u_engine.u_back." + w for w in (
+        "pc1", "bph", "ph2", "lam_q", "a_fast", "a_idle", "a_div", "a_norm", "a_shift", "a_out", "done", "lge_nz",
+        "sc_nz", "div_done", "out_rdy", "acc_en_pre", "c_rw", "c_act", "c_fl", "c_cd", "lg_e", "sc", "dcnt",
+        "zero_c", "sat", "nohl", "flat", "ccode", "c_out", "f_out")],
+    # the two multipliers' products feed data only (the opposite test, the table interpolation): left free
+    cut=["g_engine.u_engine.rho2k", "g_engine.u_engine.u_back.tprod"],
+    depth=3, bmc=20, cover=60)
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
     JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"], depth=None, bmc=32,
@@ -180,7 +207,7 @@ def build_model(job, name, work, yosys, rtl_dir):
     if job.get("shader"):
         rtl += shader_files(rtl_dir, job.get("exclude", ())) + [os.path.join(ROOT, f) for f in job.get("extra", [])]
     script = [
-        "read_verilog -defer -I rom " + " ".join(rtl),
+        "read_verilog -defer -I %s " % job.get("rom", "rom") + " ".join(rtl),
     ] + ["chparam -set %s %d %s" % (k, v, job["core"]) for k, v in job.get("chparam", {}).items()] + [
         "hierarchy -top " + job["core"] + "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
         "proc",
@@ -188,7 +215,7 @@ def build_model(job, name, work, yosys, rtl_dir):
     ] + (["expose " + " ".join("w:" + w for w in job["expose"])] if job["expose"] else []) + (
         ["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
         "rename %s fv_core_%s" % (job["core"], job["core"].split("_", 1)[1]),
-        "read_verilog -formal -I rom " + "".join(" -D" + d for d in job.get("defines", [])) + " " +
+        "read_verilog -formal -I %s " % job.get("rom", "rom") + "".join(" -D" + d for d in job.get("defines", [])) + " " +
         os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
         "hierarchy -check -top " + job["wrapper"] +
         "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
@@ -224,6 +251,33 @@ def a_solver_version():
         return None
 
 
+def rom_dirs(jobs):
+    """The generated ROM and header directories the jobs read (a job's `rom`, default rom/ at WIDTHS)."""
+    return sorted(set(JOBS[j].get("rom", "rom") for j in jobs))
+
+
+def make_roms(a, work, jobs):
+    """specrom (and setuprom for the setup and shader jobs) into each directory the jobs read."""
+    for rdir in rom_dirs(jobs):
+        js = [JOBS[j] for j in jobs if JOBS[j].get("rom", "rom") == rdir]
+        os.makedirs(os.path.join(work, rdir), exist_ok=True)
+        log = os.path.join(work, "specrom_%s.log" % rdir)
+        if run([a.specrom, "--out", rdir] + js[0].get("widths", WIDTHS), log, work) != 0:
+            print("formal: specrom failed:\n" + tail(log), file=sys.stderr)
+            return 1
+        if any(j.get("shader") for j in js):
+            log = os.path.join(work, "setuprom_%s.log" % rdir)
+            if run([os.path.abspath(a.setuprom), "--out", rdir] + js[0].get("setup_widths", []), log, work) != 0:
+                print("formal: setuprom failed:\n" + tail(log), file=sys.stderr)
+                return 1
+            if rdir != "rom":
+                # setuprom names its tables rom/...: this directory's instead
+                vh = os.path.join(work, rdir, "setup_params.vh")
+                text = open(vh).read()
+                open(vh, "w").write(text.replace('"rom/', '"%s/' % rdir))
+    return 0
+
+
 def run_mutants(a, work):
     bad = 0
     results = []
@@ -233,7 +287,8 @@ def run_mutants(a, work):
         mdir = os.path.join(work, "mutant%d" % i)
         shutil.rmtree(mdir, ignore_errors=True)
         shutil.copytree(os.path.join(ROOT, "rtl"), os.path.join(mdir, "rtl"))
-        os.symlink(os.path.join(work, "rom"), os.path.join(mdir, "rom"))
+        for rdir in rom_dirs([name]):
+            os.symlink(os.path.join(work, rdir), os.path.join(mdir, rdir))
         path = os.path.join(mdir, "rtl", fname)
         text = open(path).read()
         if text.count(old) != 1:
@@ -301,14 +356,8 @@ def main():
             return 2
 
     work = os.path.abspath(a.work)
-    os.makedirs(os.path.join(work, "rom"), exist_ok=True)
-    if run([a.specrom, "--out", "rom"] + WIDTHS, os.path.join(work, "specrom.log"), work) != 0:
-        print("formal: specrom failed:\n" + tail(os.path.join(work, "specrom.log")), file=sys.stderr)
+    if make_roms(a, work, jobs) != 0:
         return 1
-    if any(JOBS[j].get("shader") for j in jobs):
-        if run([os.path.abspath(a.setuprom), "--out", "rom"], os.path.join(work, "setuprom.log"), work) != 0:
-            print("formal: setuprom failed:\n" + tail(os.path.join(work, "setuprom.log")), file=sys.stderr)
-            return 1
 
     if a.mutants:
         return run_mutants(a, work)
