@@ -113,6 +113,14 @@ JOBS = {
         extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
         cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=42, cover=42),
 }
+# spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
+# span in order with tlast on the last, one span at a time, no deadlock; k = 1 with helper invariants over the
+# datapath's valid and last flags (spec_delay's registers: Yosys makes the array a list of registers r[0] ..)
+JOBS["spec_stream_seq"] = dict(
+    core="spec_stream_seq", wrapper="fv_spec_stream_seq",
+    expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.u_last.genblk1.g_regs.r*",
+            "u_out.have_q", "u_out.skid_v", "u_out.skid_keep", "u_out.skid_last"],
+    cut=["dp_out"], depth=1, split=True, bmc=24, cover=40)
 # The small setup (spec_setup with ITERATIVE = 1: spec_setup_engine, spec_setup_backend; formal/fv_setup_engine.v):
 # the handshake, the accounting and a ranking key that grows while a span is in flight (no deadlock), for traces
 # of any length by k-induction. k = 3: the output words' stability needs the two memories' read registers (the
@@ -130,7 +138,7 @@ JOBS["setup_engine"] = dict(
         "zero_c", "sat", "nohl", "flat", "ccode", "c_out", "f_out")],
     # the two multipliers' products feed data only (the opposite test, the table interpolation): left free
     cut=["g_engine.u_engine.rho2k", "g_engine.u_engine.u_back.tprod"],
-    depth=3, bmc=20, cover=60)
+    depth=3, bmc=12, cover=16)
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
     JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"], depth=None, bmc=32,

@@ -264,13 +264,10 @@ module fv_setup_engine (
         end
     end
 
-    // covers: a span accepted and its vectors loaded (the first run starts), the sink stalled with the
-    // descriptor out is beyond the bounded checks (over a thousand cycles a span at these widths)
+    // covers: a span accepted and its first vector loaded, a reset while loading; a descriptor offered is beyond
+    // the bounded checks (over a thousand cycles a span at these widths; the first run starts after 48)
     always @(*) begin
-        if (f_past && rst_n) begin
-            cover (st == ST_RD && run == 5'd0 && ph == 4'd1);
-            cover (st == ST_ROT && it == 5'd1 && f_acc == 1);
-        end
+        if (f_past && rst_n) cover (busy && st == ST_LOAD && ld_v == 3'd1);
         if (f_past && !rst_n) cover (busy && st == ST_LOAD);
     end
 endmodule
