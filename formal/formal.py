@@ -150,8 +150,14 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 # cycles deep) must fail on each, which shows that the properties can fail and what they catch. The one
 # equivalent change must pass (spec_unit's; for spec_stream a passing check takes z3 far longer than the
 # failing ones, which stop at their first counterexample: over ten minutes at 24 cycles).
+# setup_engine: a span takes over a thousand cycles, beyond a bounded check, so its mutants are also run through
+# the job's induction step (MUTANT_STEPS): a mutant counts as caught when the bounded check finds a trace from
+# reset (a real failure) or, failing that, the k-induction no longer proves the properties (its counterexample
+# starts in a state where every assertion held for k cycles, not necessarily one reachable from reset; the
+# equivalent change shows that the proof survives a harmless edit).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
-              "spec_shader": 42}
+              "spec_shader": 42, "spec_stream_seq": 28, "setup_engine": 8}
+MUTANT_STEPS = {"setup_engine": ["bmc", "induction"]}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
@@ -191,6 +197,32 @@ MUTANTS = [
      "else m_axis_tuser <= pop ? fmem[fr] : d_flags;", "spec_shader: the finished span's flags kept on tuser"),
     ("spec_shader", "spec_shader.v", "fspace <= fcnt_n < (1 << FLAGS_AW) - 1;", "fspace <= 1'b1;",
      "spec_shader: the flags FIFO not full-checked"),
+    ("spec_stream_seq", "spec_stream_seq.v", "ready_q <= ~accept & ~run & ~dp_busy;", "ready_q <= ~accept & ~run;",
+     "seq: a descriptor taken while the datapath holds the span before"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire last = (cnt == {L_W{1'b0}});",
+     "wire last = (cnt == {{(L_W - 1) {1'b0}}, 1'b1});", "seq: the span ends one pixel early"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire take = run & ce;", "wire take = run;",
+     "seq: pixels counted while the pipeline is stalled"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire accept = s_axis_tvalid & ready_q;", "wire accept = s_axis_tvalid;",
+     "seq: a descriptor taken while tready is low"),
+    ("spec_stream_seq", "spec_stream_out.v", "(in_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
+     "seq: the skid buffer drops a pixel on a stall"),
+    ("setup_engine", "spec_setup_engine.v", "                        s_tready <= 1'b0;\n                        vec_in",
+     "                        vec_in", "engine: s_tready stays 1 after a span is taken"),
+    ("setup_engine", "spec_setup_engine.v", "            st <= ST_IDLE;\n            s_tready <= 1'b0;",
+     "            st <= ST_IDLE;", "engine: s_tready not reset"),
+    ("setup_engine", "spec_setup_engine.v", "if (be_done) st <= ST_IDLE;", "st <= ST_IDLE;",
+     "engine: idle before the back end is done"),
+    ("setup_engine", "spec_setup_backend.v", "if (m_tvalid && m_tready) done <= 1'b1;", "if (m_tvalid) done <= 1'b1;",
+     "back end: done before the handover"),
+    ("setup_engine", "spec_setup_backend.v", "if (m_tvalid && m_tready) m_tvalid <= 1'b0;",
+     "if (m_tvalid) m_tvalid <= 1'b0;", "back end: m_tvalid dropped without m_tready"),
+    ("setup_engine", "spec_setup_backend.v", "if (div_done && out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;",
+     "if (out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;", "back end: offered before dzeta is divided"),
+    ("setup_engine", "spec_setup_backend.v", "wire norm_more = !lgx[F+1] && lge_nz;", "wire norm_more = !lgx[F+1];",
+     "back end: log2 of 0 normalizes forever (deadlock)"),
+    ("setup_engine", "spec_setup_backend.v", "wire wrap = a_out;", "wire wrap = a_out & stp;",
+     "back end: an equivalent change (must pass)"),
 ]
 
 
@@ -311,24 +343,41 @@ def run_mutants(a, work):
             print("mutant %d: Yosys failed" % i)
             bad += 1
             continue
-        log = os.path.join(mdir, name + "_bmc.log")
-        rc = run([a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress", "-t", str(MUTANT_BMC[name]),
-                  "--dump-vcd", "cex.vcd", name + ".smt2"], log, mdir)
-        text = open(log).read()
-        caught = rc != 0 and "FAILED" in text
+        base = [a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress"]
+        for mstep in MUTANT_STEPS.get(name, ["bmc"]):
+            log = os.path.join(mdir, "%s_%s.log" % (name, mstep))
+            rc = run(base + (["-t", str(MUTANT_BMC[name])] if mstep == "bmc" else ["-i", "-t", str(job["depth"])]) +
+                     ["--dump-vcd", "cex_%s.vcd" % mstep, name + ".smt2"], log, mdir, a.step_timeout)
+            text = open(log).read()
+            caught = rc != 0 and "FAILED" in text
+            if caught:
+                break
         expect = "must pass" not in what
         m = re.search(r"Assert failed in \S+: (\S+)", text)
         where = (" (%s)" % os.path.basename(m.group(1))) if m else ""
         ok = caught == expect
         print("mutant %d %-58s %s%s" % (i, what, ("caught" if caught else "not caught") + ("" if ok else "  <- WRONG"),
-                                          where if caught else ""), flush=True)
+                                          (where + ("" if mstep == "bmc" else " by the induction step"))
+                                          if caught else ""), flush=True)
         results.append({"job": name, "file": fname, "bug": what, "caught": caught, "expected": expect,
-                        "assertion": where.strip(" ()") if caught else None})
+                        "assertion": where.strip(" ()") if caught else None,
+                        "step": mstep if caught else None})
         if not ok:
             bad += 1
     print("formal: %s" % ("every mutant caught as expected" if bad == 0 else "%d mutant(s) wrong" % bad))
     if bad == 0:
-        write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC})
+        # the jobs run now replace their rows; the other jobs' rows (an earlier run's) stay
+        jobs = a.jobs.split(",")
+        old = {}
+        if a.data and os.path.exists(a.data):
+            try:
+                old = json.load(open(a.data))
+            except ValueError:
+                old = {}
+        keep = [r for r in old.get("mutants", []) if r["job"] not in jobs]
+        order = {k: i for i, k in enumerate(JOBS)}
+        results = sorted(keep + results, key=lambda r: order.get(r["job"], len(order)))
+        write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC, "steps": MUTANT_STEPS})
     return 0 if bad == 0 else 1
 
 

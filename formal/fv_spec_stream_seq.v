@@ -212,8 +212,8 @@ module fv_spec_stream_seq (
     always @(*) begin
         if (f_past && rst_n) begin
             cover (beat && m_axis_tlast && f_l[f_ended] == {L_W{1'b1}} && f_stall_last);  // longest span, stalled
-            cover (f_ended == 2 && beat && f_run == 1);           // the second pixel of the third span
-            cover (outst == 2);                                   // the next span accepted behind a stalled one
+            cover (f_ended == 1 && beat && f_run == 1);           // the second pixel of the second span
+            cover (outst == 3);                                   // two spans in the output, one in the datapath
         end
         if (f_past && !rst_n) cover (outst != 0);                 // reset with a span in flight
     end
