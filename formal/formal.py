@@ -115,12 +115,13 @@ JOBS = {
 }
 # spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
 # span in order with tlast on the last, one span at a time, no deadlock; k = 1 with helper invariants over the
-# datapath's valid and last flags (spec_delay's registers: Yosys makes the array a list of registers r[0] ..)
+# datapath's valid and last flags (spec_delay's registers: Yosys makes the array a list of registers r[0] ..); the
+# covers and the mutants on the model without the helper invariants (the mutants show what the properties catch)
 JOBS["spec_stream_seq"] = dict(
     core="spec_stream_seq", wrapper="fv_spec_stream_seq",
     expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.u_last.genblk1.g_regs.r*",
             "u_out.have_q", "u_out.skid_v", "u_out.skid_keep", "u_out.skid_last"],
-    cut=["dp_out"], depth=1, split=True, bmc=24, cover=34)
+    cut=["dp_out"], depth=1, split=True, bmc=24, cover=34, lean_defines=["FV_NO_HELPERS"])
 # The small setup (spec_setup with ITERATIVE = 1: spec_setup_engine, spec_setup_backend; formal/fv_setup_engine.v):
 # the handshake, the accounting and a ranking key that grows while a span is in flight (no deadlock), for traces
 # of any length by k-induction. k = 3: the output words' stability needs the two memories' read registers (the
