@@ -157,7 +157,7 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 # starts in a state where every assertion held for k cycles, not necessarily one reachable from reset; the
 # equivalent change shows that the proof survives a harmless edit).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
-              "spec_shader": 42, "spec_stream_seq": 28, "setup_engine": 8}
+              "spec_shader": 42, "spec_stream_seq": 36, "setup_engine": 8}
 MUTANT_STEPS = {"setup_engine": ["bmc", "induction"]}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
