@@ -41,6 +41,15 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
           "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
 
+# The small setup's job (setup_engine): the same descriptor widths but n 10 bits (spec_setup_backend's program has
+# ten multiplication steps; ROM 9 then needs a wider scale) and the smallest setup format the generator accepts
+# (setuprom: 8 micro-rotations, 22-bit coordinates, 20-bit angle fractions, 4 + 4-bit table addresses).
+WIDTHS_N10 = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "10", "--l-w", "3",
+              "--scale-w", "9", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
+SETUP_SMALL = ["--f", "22", "--iters", "8", "--zf", "20", "--lf", "12", "--ef", "12", "--tb", "4", "--rb", "4",
+               "--gain-frac", "8", "--flat-log2", "-10"]
+
+
 def core_files(rtl_dir):
     """The core's RTL: the one file list rtl/spec_core.f (names relative to rtl/)."""
     with open(os.path.join(ROOT, "rtl", "spec_core.f")) as f:
@@ -104,6 +113,33 @@ JOBS = {
         extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
         cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=42, cover=42),
 }
+# spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
+# span in order with tlast on the last, one span at a time, no deadlock; k = 1 with helper invariants over the
+# datapath's valid and last flags (spec_delay's registers: Yosys makes the array a list of registers r[0] ..); the
+# covers and the mutants on the model without the helper invariants (the mutants show what the properties catch)
+JOBS["spec_stream_seq"] = dict(
+    core="spec_stream_seq", wrapper="fv_spec_stream_seq",
+    expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.u_last.genblk1.g_regs.r*",
+            "u_out.have_q", "u_out.skid_v", "u_out.skid_keep", "u_out.skid_last"],
+    cut=["dp_out"], depth=1, split=True, bmc=24, cover=34, lean_defines=["FV_NO_HELPERS"])
+# The small setup (spec_setup with ITERATIVE = 1: spec_setup_engine, spec_setup_backend; formal/fv_setup_engine.v):
+# the handshake, the accounting and a ranking key that grows while a span is in flight (no deadlock), for traces
+# of any length by k-induction. k = 3: the output words' stability needs the two memories' read registers (the
+# engine's vector memory, the back end's register file) to have read the same word for two cycles, which the
+# induction sees in three states without the memories' words being named. A span takes over a thousand cycles
+# at these widths: the bounded base case and the covers reach the vectors' load and the first runs only.
+JOBS["setup_engine"] = dict(
+    core="spec_setup", wrapper="fv_setup_engine", shader=True, rom="rom_n10", widths=WIDTHS_N10,
+    setup_widths=SETUP_SMALL, chparam={"ITERATIVE": 1},
+    expose=["g_engine.u_engine." + w for w in (
+        "st", "ph", "it", "rph", "qt", "run", "run_tests", "ld_v", "ld_c", "be_start", "bad", "rule_reg", "opp",
+        "v_ra", "v_we", "n_reg", "l_reg")] + ["g_engine.u_engine.u_back." + w for w in (
+        "pc1", "bph", "ph2", "lam_q", "a_fast", "a_idle", "a_div", "a_norm", "a_shift", "a_out", "done", "lge_nz",
+        "sc_nz", "div_done", "out_rdy", "acc_en_pre", "c_rw", "c_act", "c_fl", "c_cd", "lg_e", "sc", "dcnt",
+        "zero_c", "sat", "nohl", "flat", "ccode", "c_out", "f_out")],
+    # the two multipliers' products feed data only (the opposite test, the table interpolation): left free
+    cut=["g_engine.u_engine.rho2k", "g_engine.u_engine.u_back.tprod"],
+    depth=3, bmc=12, cover=16)
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
     JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"], depth=None, bmc=32,
@@ -115,8 +151,14 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 # cycles deep) must fail on each, which shows that the properties can fail and what they catch. The one
 # equivalent change must pass (spec_unit's; for spec_stream a passing check takes z3 far longer than the
 # failing ones, which stop at their first counterexample: over ten minutes at 24 cycles).
+# setup_engine: a span takes over a thousand cycles, beyond a bounded check, so its mutants are also run through
+# the job's induction step (MUTANT_STEPS): a mutant counts as caught when the bounded check finds a trace from
+# reset (a real failure) or, failing that, the k-induction no longer proves the properties (its counterexample
+# starts in a state where every assertion held for k cycles, not necessarily one reachable from reset; the
+# equivalent change shows that the proof survives a harmless edit).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
-              "spec_shader": 42}
+              "spec_shader": 42, "spec_stream_seq": 36, "setup_engine": 8}
+MUTANT_STEPS = {"setup_engine": ["bmc", "induction"]}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
@@ -156,6 +198,32 @@ MUTANTS = [
      "else m_axis_tuser <= pop ? fmem[fr] : d_flags;", "spec_shader: the finished span's flags kept on tuser"),
     ("spec_shader", "spec_shader.v", "fspace <= fcnt_n < (1 << FLAGS_AW) - 1;", "fspace <= 1'b1;",
      "spec_shader: the flags FIFO not full-checked"),
+    ("spec_stream_seq", "spec_stream_seq.v", "ready_q <= ~accept & ~run & ~dp_busy;", "ready_q <= ~accept & ~run;",
+     "seq: a descriptor taken while the datapath holds the span before"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire last = (cnt == {L_W{1'b0}});",
+     "wire last = (cnt == {{(L_W - 1) {1'b0}}, 1'b1});", "seq: the span ends one pixel early"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire take = run & ce;", "wire take = run;",
+     "seq: pixels counted while the pipeline is stalled"),
+    ("spec_stream_seq", "spec_stream_seq.v", "wire accept = s_axis_tvalid & ready_q;", "wire accept = s_axis_tvalid;",
+     "seq: a descriptor taken while tready is low"),
+    ("spec_stream_seq", "spec_stream_out.v", "(in_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
+     "seq: the skid buffer drops a pixel on a stall"),
+    ("setup_engine", "spec_setup_engine.v", "                        s_tready <= 1'b0;\n                        vec_in",
+     "                        vec_in", "engine: s_tready stays 1 after a span is taken"),
+    ("setup_engine", "spec_setup_engine.v", "            st <= ST_IDLE;\n            s_tready <= 1'b0;",
+     "            st <= ST_IDLE;", "engine: s_tready not reset"),
+    ("setup_engine", "spec_setup_engine.v", "if (be_done) st <= ST_IDLE;", "st <= ST_IDLE;",
+     "engine: idle before the back end is done"),
+    ("setup_engine", "spec_setup_backend.v", "if (m_tvalid && m_tready) done <= 1'b1;", "if (m_tvalid) done <= 1'b1;",
+     "back end: done before the handover"),
+    ("setup_engine", "spec_setup_backend.v", "if (m_tvalid && m_tready) m_tvalid <= 1'b0;",
+     "if (m_tvalid) m_tvalid <= 1'b0;", "back end: m_tvalid dropped without m_tready"),
+    ("setup_engine", "spec_setup_backend.v", "if (div_done && out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;",
+     "if (out_rdy && !m_tvalid && !done) m_tvalid <= 1'b1;", "back end: offered before dzeta is divided"),
+    ("setup_engine", "spec_setup_backend.v", "wire norm_more = !lgx[F+1] && lge_nz;", "wire norm_more = !lgx[F+1];",
+     "back end: log2 of 0 normalizes forever (deadlock)"),
+    ("setup_engine", "spec_setup_backend.v", "wire wrap = a_out;", "wire wrap = a_out & stp;",
+     "back end: an equivalent change (must pass)"),
 ]
 
 
@@ -180,7 +248,7 @@ def build_model(job, name, work, yosys, rtl_dir):
     if job.get("shader"):
         rtl += shader_files(rtl_dir, job.get("exclude", ())) + [os.path.join(ROOT, f) for f in job.get("extra", [])]
     script = [
-        "read_verilog -defer -I rom " + " ".join(rtl),
+        "read_verilog -defer -I %s " % job.get("rom", "rom") + " ".join(rtl),
     ] + ["chparam -set %s %d %s" % (k, v, job["core"]) for k, v in job.get("chparam", {}).items()] + [
         "hierarchy -top " + job["core"] + "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
         "proc",
@@ -188,7 +256,7 @@ def build_model(job, name, work, yosys, rtl_dir):
     ] + (["expose " + " ".join("w:" + w for w in job["expose"])] if job["expose"] else []) + (
         ["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
         "rename %s fv_core_%s" % (job["core"], job["core"].split("_", 1)[1]),
-        "read_verilog -formal -I rom " + "".join(" -D" + d for d in job.get("defines", [])) + " " +
+        "read_verilog -formal -I %s " % job.get("rom", "rom") + "".join(" -D" + d for d in job.get("defines", [])) + " " +
         os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
         "hierarchy -check -top " + job["wrapper"] +
         "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
@@ -224,6 +292,33 @@ def a_solver_version():
         return None
 
 
+def rom_dirs(jobs):
+    """The generated ROM and header directories the jobs read (a job's `rom`, default rom/ at WIDTHS)."""
+    return sorted(set(JOBS[j].get("rom", "rom") for j in jobs))
+
+
+def make_roms(a, work, jobs):
+    """specrom (and setuprom for the setup and shader jobs) into each directory the jobs read."""
+    for rdir in rom_dirs(jobs):
+        js = [JOBS[j] for j in jobs if JOBS[j].get("rom", "rom") == rdir]
+        os.makedirs(os.path.join(work, rdir), exist_ok=True)
+        log = os.path.join(work, "specrom_%s.log" % rdir)
+        if run([a.specrom, "--out", rdir] + js[0].get("widths", WIDTHS), log, work) != 0:
+            print("formal: specrom failed:\n" + tail(log), file=sys.stderr)
+            return 1
+        if any(j.get("shader") for j in js):
+            log = os.path.join(work, "setuprom_%s.log" % rdir)
+            if run([os.path.abspath(a.setuprom), "--out", rdir] + js[0].get("setup_widths", []), log, work) != 0:
+                print("formal: setuprom failed:\n" + tail(log), file=sys.stderr)
+                return 1
+            if rdir != "rom":
+                # setuprom names its tables rom/...: this directory's instead
+                vh = os.path.join(work, rdir, "setup_params.vh")
+                text = open(vh).read()
+                open(vh, "w").write(text.replace('"rom/', '"%s/' % rdir))
+    return 0
+
+
 def run_mutants(a, work):
     bad = 0
     results = []
@@ -233,7 +328,8 @@ def run_mutants(a, work):
         mdir = os.path.join(work, "mutant%d" % i)
         shutil.rmtree(mdir, ignore_errors=True)
         shutil.copytree(os.path.join(ROOT, "rtl"), os.path.join(mdir, "rtl"))
-        os.symlink(os.path.join(work, "rom"), os.path.join(mdir, "rom"))
+        for rdir in rom_dirs([name]):
+            os.symlink(os.path.join(work, rdir), os.path.join(mdir, rdir))
         path = os.path.join(mdir, "rtl", fname)
         text = open(path).read()
         if text.count(old) != 1:
@@ -248,24 +344,41 @@ def run_mutants(a, work):
             print("mutant %d: Yosys failed" % i)
             bad += 1
             continue
-        log = os.path.join(mdir, name + "_bmc.log")
-        rc = run([a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress", "-t", str(MUTANT_BMC[name]),
-                  "--dump-vcd", "cex.vcd", name + ".smt2"], log, mdir)
-        text = open(log).read()
-        caught = rc != 0 and "FAILED" in text
+        base = [a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress"]
+        for mstep in MUTANT_STEPS.get(name, ["bmc"]):
+            log = os.path.join(mdir, "%s_%s.log" % (name, mstep))
+            rc = run(base + (["-t", str(MUTANT_BMC[name])] if mstep == "bmc" else ["-i", "-t", str(job["depth"])]) +
+                     ["--dump-vcd", "cex_%s.vcd" % mstep, name + ".smt2"], log, mdir, a.step_timeout)
+            text = open(log).read()
+            caught = rc != 0 and "FAILED" in text
+            if caught:
+                break
         expect = "must pass" not in what
         m = re.search(r"Assert failed in \S+: (\S+)", text)
         where = (" (%s)" % os.path.basename(m.group(1))) if m else ""
         ok = caught == expect
         print("mutant %d %-58s %s%s" % (i, what, ("caught" if caught else "not caught") + ("" if ok else "  <- WRONG"),
-                                          where if caught else ""), flush=True)
+                                          (where + ("" if mstep == "bmc" else " by the induction step"))
+                                          if caught else ""), flush=True)
         results.append({"job": name, "file": fname, "bug": what, "caught": caught, "expected": expect,
-                        "assertion": where.strip(" ()") if caught else None})
+                        "assertion": where.strip(" ()") if caught else None,
+                        "step": mstep if caught else None})
         if not ok:
             bad += 1
     print("formal: %s" % ("every mutant caught as expected" if bad == 0 else "%d mutant(s) wrong" % bad))
     if bad == 0:
-        write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC})
+        # the jobs run now replace their rows; the other jobs' rows (an earlier run's) stay
+        jobs = a.jobs.split(",")
+        old = {}
+        if a.data and os.path.exists(a.data):
+            try:
+                old = json.load(open(a.data))
+            except ValueError:
+                old = {}
+        keep = [r for r in old.get("mutants", []) if r["job"] not in jobs]
+        order = {k: i for i, k in enumerate(JOBS)}
+        results = sorted(keep + results, key=lambda r: order.get(r["job"], len(order)))
+        write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC, "steps": MUTANT_STEPS})
     return 0 if bad == 0 else 1
 
 
@@ -301,14 +414,8 @@ def main():
             return 2
 
     work = os.path.abspath(a.work)
-    os.makedirs(os.path.join(work, "rom"), exist_ok=True)
-    if run([a.specrom, "--out", "rom"] + WIDTHS, os.path.join(work, "specrom.log"), work) != 0:
-        print("formal: specrom failed:\n" + tail(os.path.join(work, "specrom.log")), file=sys.stderr)
+    if make_roms(a, work, jobs) != 0:
         return 1
-    if any(JOBS[j].get("shader") for j in jobs):
-        if run([os.path.abspath(a.setuprom), "--out", "rom"], os.path.join(work, "setuprom.log"), work) != 0:
-            print("formal: setuprom failed:\n" + tail(os.path.join(work, "setuprom.log")), file=sys.stderr)
-            return 1
 
     if a.mutants:
         return run_mutants(a, work)

@@ -643,12 +643,17 @@ def block_formal_mutants(f, name="formal_mutants"):
     for m in d["mutants"]:
         if m["expected"]:
             res = "`%s`" % m["assertion"] if m.get("assertion") else "caught"
+            if m.get("step") == "induction":
+                res += " (the induction step)"
         else:
             res = "not caught, as it must not be (an equivalent change)"
         out.append("| %s | %s | %s |" % (m["job"], m["bug"], res))
     out.append("")
-    out.append("(`make formal-mutants` on %s: bounded checks of %s cycles.)" % (
-        d["date"], ", ".join("%s %d" % kv for kv in sorted(d["bmc_cycles"].items()))))
+    jobs = set(m["job"] for m in d["mutants"])
+    out.append("(`make %s` on %s: bounded checks of %s cycles%s.)" % (
+        "formal-shader" if name == "formal_mutants_shader" else "formal-mutants", d["date"],
+        ", ".join("%s %d" % kv for kv in sorted(d["bmc_cycles"].items()) if kv[0] in jobs),
+        "".join("; %s: then the induction step" % j for j in sorted(d.get("steps", {})) if j in jobs)))
     return "\n".join(out)
 
 
