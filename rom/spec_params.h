@@ -28,6 +28,7 @@ constexpr int DATAPATH_LATENCY = 12;  // spec_datapath: register 8 to output 27,
 constexpr int UNIT_FIRST_PIXEL = 15;  // spec_unit: pixel i valid in cycle t + this + 2i after Start in t
 constexpr int STREAM_LATENCY = 26;  // spec_stream: descriptor accepted in a -> first pixel in a + this
 constexpr int STREAM_ACC = 8;  // spec_stream: stages of the pipelined accumulator (register 8)
+constexpr int STREAM_SEQ_LATENCY = 14;  // spec_stream_seq: descriptor accepted in a -> first pixel in a + this (and the clocks between spans)
 constexpr int TBL_DW = 17;
 constexpr int ROM9_DEPTH = 1024;
 constexpr int ROM12_DEPTH = 16384;

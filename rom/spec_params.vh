@@ -2,7 +2,7 @@
 // Default parameters of spec_unit and spec_stream, the descriptor layout and the latencies of this
 // configuration; the ROM images beside this file are made for them (the cores check at time 0).
 `ifdef SPEC_PARAMS_VH
-`ifndef SPEC_PARAMS_10965a0c
+`ifndef SPEC_PARAMS_2e342a56
 // Two spec_params.vh of different configurations in one compilation: the first one's macros would win
 // silently. Put one configuration's directory on the include path; pass other configurations' values
 // as parameters of the instances (docs/interface.md, "Configurations").
@@ -10,7 +10,7 @@
 `endif
 `else
 `define SPEC_PARAMS_VH
-`define SPEC_PARAMS_10965a0c
+`define SPEC_PARAMS_2e342a56
 `define SPEC_C_W 16  // register 1: C, UQ0.C_W
 `define SPEC_ANG_W 32  // registers 2, 3, 8: angle, two's complement radians
 `define SPEC_ANG_FRAC 28  // fraction bits of the angle
@@ -36,6 +36,7 @@
 `define SPEC_UNIT_FIRST_PIXEL 15  // spec_unit: pixel i valid in cycle t + this + 2i after Start in t
 `define SPEC_STREAM_LATENCY 26  // spec_stream: descriptor accepted in a -> first pixel in a + this
 `define SPEC_STREAM_ACC 8  // spec_stream: stages of the pipelined accumulator (register 8)
+`define SPEC_STREAM_SEQ_LATENCY 14  // spec_stream_seq: descriptor accepted in a -> first pixel in a + this (and the clocks between spans)
 `define SPEC_ROM9_FILE "rom/rom9_scale.hex"
 `define SPEC_ROM12_FILE "rom/rom12_cosk.hex"
 `endif

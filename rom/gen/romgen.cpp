@@ -188,6 +188,8 @@ std::vector<Param> params(const Format& f) {
         {"UNIT_FIRST_PIXEL", f.unit_first_pixel(), "spec_unit: pixel i valid in cycle t + this + 2i after Start in t"},
         {"STREAM_LATENCY", f.stream_latency(), "spec_stream: descriptor accepted in a -> first pixel in a + this"},
         {"STREAM_ACC", f.stream_acc(), "spec_stream: stages of the pipelined accumulator (register 8)"},
+        {"STREAM_SEQ_LATENCY", f.stream_seq_latency(),
+         "spec_stream_seq: descriptor accepted in a -> first pixel in a + this (and the clocks between spans)"},
     };
 }
 
