@@ -110,7 +110,7 @@ JOBS = {
     # bound is 42: at 34, the depth of the runs before spec_stream's pipeline grew (issue 14), the covers failed.
     "spec_shader": dict(
         core="spec_shader", wrapper="fv_spec_shader", shader=True, exclude=["spec_setup_pipe.v"],
-        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=[],
+        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=["fcnt"],
         cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=42, cover=42),
 }
 # spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
@@ -198,6 +198,8 @@ MUTANTS = [
      "else m_axis_tuser <= pop ? fmem[fr] : d_flags;", "spec_shader: the finished span's flags kept on tuser"),
     ("spec_shader", "spec_shader.v", "fspace <= fcnt_n < (1 << FLAGS_AW) - 1;", "fspace <= 1'b1;",
      "spec_shader: the flags FIFO not full-checked"),
+    ("spec_shader", "spec_shader.v", "fone <= fcnt_n == {{FLAGS_AW{1'b0}}, 1'b1};", "fone <= 1'b0;",
+     "spec_shader: fone never set (a span that arrives as the only one leaves gets stale flags)"),
     ("spec_stream_seq", "spec_stream_seq.v", "ready_q <= ~accept & ~run & ~dp_busy;", "ready_q <= ~accept & ~run;",
      "seq: a descriptor taken while the datapath holds the span before"),
     ("spec_stream_seq", "spec_stream_seq.v", "wire last = (cnt == {L_W{1'b0}});",

@@ -14,7 +14,8 @@
 //     m_axis_tlast and m_axis_tuser unchanged (a reset may drop it);
 //   - every accepted span beat gives exactly l + 1 pixels, spans in order, m_axis_tlast on the last pixel of
 //     each only, no pixel without an accepted beat;
-//   - every pixel carries its own span's flags on m_axis_tuser;
+//   - every pixel carries its own span's flags on m_axis_tuser, and so does tuser whenever a span is in the
+//     flags FIFO (fcnt, exposed): the oldest span's;
 //   - no deadlock: while spans are outstanding and the sink is ready, a pixel comes within RESP cycles;
 //   - reset: no pixel and no s_axis_tready in the cycle after a reset edge.
 // These are proved for the first `bmc` cycles after reset (formal.py: base case only; an induction would need
@@ -38,11 +39,13 @@ module fv_spec_shader (
     wire s_axis_tready, m_axis_tvalid, m_axis_tlast;
     wire [OUT_W-1:0] m_axis_tdata;
     wire [6:0] m_axis_tuser;
+    wire [2:0] fcnt;                      // exposed: spans in the flags FIFO (FLAGS_AW + 1 bits)
     fv_core_shader dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready),
         .m_axis_tdata(m_axis_tdata), .m_axis_tlast(m_axis_tlast), .m_axis_tuser(m_axis_tuser),
-        .\g_stream.u_stream.dp_out.i (f_px), .\g_stream.u_stream.dp_out ()
+        .\g_stream.u_stream.dp_out.i (f_px), .\g_stream.u_stream.dp_out (),
+        .fcnt(fcnt)
     );
 
     reg f_past = 1'b0, f_rst_q = 1'b0, f_rst_q2 = 1'b0;
@@ -106,6 +109,9 @@ module fv_spec_shader (
                 assert (m_axis_tuser == {3'b000, f_ended[3:0]});
             end
             assert (f_wait < RESP);
+            // tuser is the oldest span's flags as soon as that span is in the flags FIFO, before its first pixel
+            // (a stale word loaded there would otherwise show only on pixels far past the bound)
+            if (f_rst_q && fcnt != 0) assert (m_axis_tuser == {3'b000, f_ended[3:0]});
         end
     end
 
