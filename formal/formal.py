@@ -41,11 +41,16 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTHS = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "4", "--l-w", "3",
           "--scale-w", "5", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
 
+
+def with_args(args, changes):
+    """args (a specrom argument list of --option value pairs) with the values of the options in changes replaced."""
+    return [changes.get(args[i - 1], v) if i % 2 else v for i, v in enumerate(args)]
+
+
 # The small setup's job (setup_engine): the same descriptor widths but n 10 bits (spec_setup_backend's program has
 # ten multiplication steps; ROM 9 then needs a wider scale) and the smallest setup format the generator accepts
 # (setuprom: 8 micro-rotations, 22-bit coordinates, 20-bit angle fractions, 4 + 4-bit table addresses).
-WIDTHS_N10 = ["--c-w", "4", "--ang-w", "14", "--ang-frac", "11", "--n-w", "10", "--l-w", "3",
-              "--scale-w", "9", "--scale-frac", "4", "--tbl-aw", "4", "--tbl-frac", "4"]
+WIDTHS_N10 = with_args(WIDTHS, {"--n-w": "10", "--scale-w": "9"})
 SETUP_SMALL = ["--f", "22", "--iters", "8", "--zf", "20", "--lf", "12", "--ef", "12", "--tb", "4", "--rb", "4",
                "--gain-frac", "8", "--flat-log2", "-10"]
 
