@@ -211,3 +211,22 @@ TEST(SetupModel, TheCheckCatchesAWrongAngle) {
     EXPECT_GT(tried, 50u);
     EXPECT_GT(double(caught) / double(tried), 0.5);
 }
+
+// The named formats (setuprom --config): "narrow" is valid for the generator and the model; an unknown name
+// and the combinations the RTL's back end cannot take are refused with a reason
+TEST(SetupFormatConfig, NamedFormatsAndTheBackEndsLimits) {
+    EXPECT_EQ(setup_format_config("default").f, SetupFormat().f);
+    const SetupFormat n = setup_format_config("narrow");
+    EXPECT_NO_THROW(n.validate());
+    EXPECT_NO_THROW(SetupModel{n});
+    EXPECT_LT(n.w(), SetupFormat().w());
+    EXPECT_THROW(setup_format_config("wide"), std::invalid_argument);
+    SetupFormat e = n;
+    e.ef = 16;   // the C code's width: no rounding shift left for C >= 1/2
+    EXPECT_THROW(SetupModel{e}, std::invalid_argument);
+    SetupFormat t = n;
+    t.rb = 10;   // tb + rb > f
+    t.lf = t.ef = 18;
+    EXPECT_NO_THROW(t.validate());
+    EXPECT_THROW(SetupModel{t}, std::invalid_argument);
+}

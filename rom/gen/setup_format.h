@@ -65,4 +65,27 @@ struct SetupFormat {
     }
 };
 
+// Named formats. "default" is the one committed in rom/ (the shader's accuracy goal, docs/setup.md).
+// "narrow" is the narrowest one the 16-bit span ends allow (f = vec_w), the other widths cut to match it (the
+// angle lanes cannot be: zf is at least the core's ang_frac + 1): for a
+// design whose picture is far coarser than the core's bound, such as the iCEBreaker's 4-bit DVI Pmod
+// (docs/boards.md, where its error against double precision is measured).
+inline SetupFormat setup_format_config(const std::string& name) {
+    SetupFormat sf;
+    if (name == "default") return sf;
+    if (name == "narrow") {
+        sf.f = 16;
+        sf.iters = 16;
+        sf.zf = 29;         // the least the model accepts: the core's ang_frac + 1 (dzeta = gamma / l)
+        sf.gain_frac = 16;
+        sf.lf = 16;
+        sf.ef = 18;         // above the C code's 16 bits: the back end's rounding shift of C is at least 1
+        sf.tb = 7;          // tb + rb <= f: the back end's log2 normalizer takes them from f + 1 bits
+        sf.rb = 9;
+        sf.opp_tau_log2 = -12;
+        return sf;
+    }
+    throw std::invalid_argument("unknown setup configuration '" + name + "' (default, narrow)");
+}
+
 }  // namespace spec

@@ -14,6 +14,9 @@ SetupModel::SetupModel(const SetupFormat& sf, const Format& core)
     : sf_(sf), cf_(core), k_(setup_consts(sf)), log2_(make_setup_log2(sf)), exp2_(make_setup_exp2(sf)) {
     core.validate();
     if (sf.zf < core.ang_frac + 1) throw std::invalid_argument("setup format: zf must exceed the core's ang_frac");
+    // the RTL's (spec_setup_backend) needs, which the model's arithmetic alone would not
+    if (sf.ef <= core.c_w) throw std::invalid_argument("setup format: ef must exceed the core's C width");
+    if (sf.tb + sf.rb > sf.f) throw std::invalid_argument("setup format: tb + rb must be at most f");
 }
 
 void SetupModel::check(int64_t v, int bits, const char* what) const {
