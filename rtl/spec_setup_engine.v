@@ -284,7 +284,7 @@ module spec_setup_engine #(
     end
     // rho2 * OPP_K < -z2 as the sign of rho2 * OPP_K + z2; |x| < TAU as -TAU < x < TAU (no negations)
     wire signed [W+10:0] opp_sum = {rho2k[W+9], rho2k} + {{11{acc[W-1]}}, acc};
-    reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 1
+    reg lb_small, acc_small;              // registers (free-running): read at ST_WR's phase 3
     // TAU = 2^TK (the generator's 2^(F + opp_tau_log2)): -TAU < x < TAU is "the bits above TK - 1 all 0, or all 1
     // with a nonzero bit below", no comparator; any other TAU, the comparisons
     localparam integer TK = $clog2(TAU);
@@ -519,16 +519,18 @@ module spec_setup_engine #(
                             v_wd <= acc;
                         end
                     endcase
-                    // (acc before the last gain term, as before the two-clock micro-rotations)
+                    // The tests below read acc after the last gain term (added at phase 1), as the model's
+                    // coordinate: the term (t >>> ITERS, nonzero for a negative t) can move a value across
+                    // the threshold (seen with the narrow format, where TAU is 16 units).
                     // P2's N2 run (plane z, x: a = z, b = x, t = y): exactly opposite? (the pair's and acc's tests of
-                    // phase 0, registered)
-                    if (ph == 4'd1 && run_p2n2) exact_opp <= la[W-1] && lb_small && acc_small;
+                    // phase 2, registered)
+                    if (ph == 4'd3 && run_p2n2) exact_opp <= la[W-1] && lb_small && acc_small;
                     if (ph == 4'd0) begin
                         // gamma is ready in lz: the back end starts (and waits for lambda at its step 3)
                         if (run_gamma) be_start <= 1'b1;
                     end
                     // P3's N2 run (plane x, y: a = rho2, t = z2): the opposite flag
-                    if (ph == 4'd1 && run_p3n2) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
+                    if (ph == 4'd2 && run_p3n2) opp <= exact_opp || (acc[W-1] && opp_sum[W+10]);
                     if (ph == 4'd4) begin
                         ph <= 4'd0;
                         if (run_last) begin
