@@ -357,7 +357,7 @@ board-split: build
 
 bitstream: check-board build deps-synth
 	@mkdir -p docs/data
-	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom $(if $(filter icebreaker,$(BOARD)),--breakdown); rc=$$?; \
+	python3 boards/flow.py --board $(BOARD) --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom $(if $(filter icebreaker,$(BOARD)),--breakdown); rc=$$?; \
 	  if [ -f $(BUILD)/board/$(BOARD)/summary.json ]; then \
 	    cp $(BUILD)/board/$(BOARD)/summary.json docs/data/bitstream_$(BOARD).json; fi; exit $$rc
 
@@ -371,7 +371,8 @@ flash: check-board
 board-tables: build
 	$(BUILD)/boardsim-quick gen --out-dir boards/common/gen
 
-lint-boards: deps
+lint-boards: deps configure
+	@$(call cmake_build,$(BUILD),--target rom_setup_narrow) > /dev/null
 	@for top in $(basename $(notdir $(BOARD_RTL))); do \
 	    verilator --lint-only -Wall -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) --top-module $$top \
 	        || exit 1; echo "  $$top: clean"; \
@@ -381,3 +382,9 @@ lint-boards: deps
 	        $$(grep -v '^#' boards/$$b/$$b.f) boards/$$b/sim/*.v --top-module $${b}_top || exit 1; \
 	    echo "  $${b}_top (with the primitives' simulation models): clean"; \
 	done
+	@# the iCEBreaker as it is built: the setup in the narrow format (its header before rom/'s)
+	@verilator --lint-only -Wall --timing -I$(BUILD)/rom_setup_narrow -Irom -Irtl -Iboards/common/gen $(CORE_RTL) \
+	    $(BOARD_RTL) $$(grep -v '^#' boards/icebreaker/icebreaker.f) boards/icebreaker/sim/*.v \
+	    -GLOG2_FILE='"$(BUILD)/rom_setup_narrow/setup_log2.hex"' -GEXP2_FILE='"$(BUILD)/rom_setup_narrow/setup_exp2.hex"' \
+	    --top-module icebreaker_top || exit 1
+	@echo "  icebreaker_top with the narrow setup format: clean"

@@ -31,37 +31,41 @@ target_link_libraries(boardmodel PUBLIC specrender specsetup)
 target_compile_options(boardmodel PRIVATE ${WARN})
 
 # The board tops with the primitives' models (Verilator --timing: the PLL models schedule their clocks)
-function(board_file_args out mode k)
-  set(${out} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
+# (setup: the directory of the setup format's header and tables; the header is found there before rom/)
+function(board_file_args out mode k setup)
+  set(${out} -I${setup} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
     "-GOBJ_FILE=\"${BOARD_GEN}/objects_${mode}.hex\"" "-GSHADE_FILE=\"${BOARD_GEN}/shade_${mode}.hex\""
     "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
     "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k}
-    "-GLOG2_FILE=\"${ROM_DIR}/setup_log2.hex\"" "-GEXP2_FILE=\"${ROM_DIR}/setup_exp2.hex\"" PARENT_SCOPE)
+    "-GLOG2_FILE=\"${setup}/setup_log2.hex\"" "-GEXP2_FILE=\"${setup}/setup_exp2.hex\"" PARENT_SCOPE)
 endfunction()
 set(BOARD_VL_ARGS -Wall -Wno-fatal -I${ROM_DIR} -I${BOARD_GEN} -O3 --x-assign fast --x-initial fast --timing)
+# The iCEBreaker's setup is the narrow format (its 4-bit picture; docs/boards.md), the ULX3S's the default one
+# (sim/board/board_shaders.cpp: board_setup_config, the model's side)
 function(board_verilate target board prefix mode k)
-  board_file_args(files ${mode} ${k})
   if(board STREQUAL "icebreaker")
+    board_file_args(files ${mode} ${k} ${SETUP_NARROW_DIR})
     set(src ${BOARD_CORE_RTL} ${BOARD_COMMON} ${BOARD_ICEBREAKER} ${BOARD_ICEBREAKER_SIM})
   else()
+    board_file_args(files ${mode} ${k} ${ROM_DIR})
     set(src ${BOARD_CORE_RTL} ${BOARD_COMMON} ${BOARD_ULX3S} ${BOARD_ULX3S_SIM})
   endif()
   verilate(${target} SOURCES ${src} TOP_MODULE ${board}_top PREFIX ${prefix}
-    VERILATOR_ARGS ${BOARD_VL_ARGS} ${files} ${ARGN})
+    VERILATOR_ARGS ${files} ${BOARD_VL_ARGS} ${ARGN})   # (the setup directory before rom/)
 endfunction()
 
 set(BOARDSIM_SOURCES sim/board/boardsim_main.cpp sim/board/board_harness.cpp sim/board/harness_icebreaker.cpp
   sim/board/harness_ulx3s.cpp)
 # boardsim-quick: the 128 x 96 test raster of both boards (make test)
 add_executable(boardsim-quick ${BOARDSIM_SOURCES})
-add_dependencies(boardsim-quick rom_up5k)
+add_dependencies(boardsim-quick rom_up5k rom_setup_narrow)
 target_link_libraries(boardsim-quick PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
 board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
 board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 32 -GMODE=3)
 # boardsim: every board and mode (make board-sim)
 add_executable(boardsim EXCLUDE_FROM_ALL ${BOARDSIM_SOURCES})
-add_dependencies(boardsim rom_up5k)
+add_dependencies(boardsim rom_up5k rom_setup_narrow)
 target_compile_definitions(boardsim PRIVATE BOARDSIM_FULL=1)
 target_link_libraries(boardsim PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)

@@ -16,6 +16,7 @@ With --breakdown, a second synthesis keeps the hierarchy and each design's "brea
 shader's parts and of each board module (their subtrees), to show where a design that does not fit spends them.
 
 Usage: boards/flow.py --board icebreaker|ulx3s [--modes 640x480,1280x720] [--seed N] [--specrom build/specrom]
+                      [--setuprom build/setuprom]
                       [--breakdown]
 """
 import argparse
@@ -78,6 +79,8 @@ BOARDS = {
     "icebreaker": {
         "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
         "default_modes": ["640x480"], "devices": ["up5k"],
+        # the setup's format (setuprom --config; docs/boards.md): narrow on the iCEBreaker's 4-bit picture
+        "setup_config": "narrow",
         "split_k": {"640x480": 8}, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
         # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
         "freq_mhz": {"640x480": 50.25},
@@ -88,6 +91,7 @@ BOARDS = {
     "ulx3s": {
         "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
         "default_modes": ["640x480"], "devices": ["25k"],
+        "setup_config": "default",
         # 640 x 480: the frame buffer design (board_core_fb, a 320 x 240 buffer, K = 8, as the iCEBreaker's);
         # 1280 x 720: racing the beam with the pipelined setup (K = 32)
         "split_k": {"640x480": 8, "1280x720": 32}, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
@@ -106,7 +110,7 @@ BOARDS = {
 }
 
 
-def yosys_script(b, mode, rom_dir, json_out, stat_out, synth_cmd):
+def yosys_script(b, mode, rom_dir, setup_dir, json_out, stat_out, synth_cmd):
     d = BOARDS[b]
     files = core_rtl() + read_list("boards/common/board_common.f") + read_list(d["list"])
     params = dict(d["params"][mode])
@@ -115,13 +119,14 @@ def yosys_script(b, mode, rom_dir, json_out, stat_out, synth_cmd):
         "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"][mode]),
         "OBJ_FILE": "%s/objects_%s.hex" % (GEN, sm), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, sm),
         "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
-        "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": "rom/setup_log2.hex",
-        "EXP2_FILE": "rom/setup_exp2.hex",
+        "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": setup_dir + "/setup_log2.hex",
+        "EXP2_FILE": setup_dir + "/setup_exp2.hex",
     }
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += " -set SPLIT_K %d " % d["split_k"][mode] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
-    return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
-            % (GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
+    # the setup's header (setup_params.vh) is found in setup_dir before rom/
+    return ("read_verilog -defer -I%s -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
+            % (setup_dir, GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
 
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
@@ -205,14 +210,23 @@ def synthesize(board, mode, args, tools, out):
     if subprocess.call([args.specrom, "--config", "up5k", "--out", os.path.join(ROOT, rom_dir)],
                        stdout=subprocess.DEVNULL) != 0:
         fail("specrom --config up5k failed")
-    res = {"mode": mode}
+    # the setup's format: rom/ for the default one, else setuprom's files in the build (the yowasp tools see
+    # only the repository's tree, the build directory is in it)
+    setup_dir = "rom"
+    if d["setup_config"] != "default":
+        setup_dir = os.path.join(rel, "rom_setup_" + d["setup_config"])
+        os.makedirs(os.path.join(ROOT, setup_dir), exist_ok=True)
+        if subprocess.call([args.setuprom, "--config", d["setup_config"], "--out", os.path.join(ROOT, setup_dir)],
+                           stdout=subprocess.DEVNULL) != 0:
+            fail("setuprom --config %s failed" % d["setup_config"])
+    res = {"mode": mode, "setup_config": d["setup_config"]}
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)
     if board == "icebreaker":
         synth_cmd = "synth_ice40 -dsp -spram -top %s -json %s" % (d["top"], net)
     else:
         synth_cmd = "synth_ecp5 -top %s -json %s" % (d["top"], net)
-    rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, stat, synth_cmd)],
+    rc, res["yosys_s"] = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, setup_dir, net, stat, synth_cmd)],
                              "%s/%s.yosys.log" % (rel, name))
     if rc != 0:
         fail("yosys failed for %s (see %s/%s.yosys.log)" % (name, rel, name), 1)
@@ -229,7 +243,7 @@ def synthesize(board, mode, args, tools, out):
     if args.breakdown:
         hstat = "%s/%s.hier.stat" % (rel, name)
         hier = synth_cmd.replace(" -json %s" % net, "") + " -noflatten"
-        rc, _ = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, net, hstat, hier)],
+        rc, _ = run(tools["yosys"] + ["-q", "-p", yosys_script(board, mode, rom_dir, setup_dir, net, hstat, hier)],
                     "%s/%s.hier.yosys.log" % (rel, name))
         if rc == 0:
             b = breakdown(open(os.path.join(ROOT, hstat)).read(), d["cells"])
@@ -302,6 +316,7 @@ def main():
     ap.add_argument("--modes", default="")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
+    ap.add_argument("--setuprom", default=os.path.join(ROOT, "build", "setuprom"))
     ap.add_argument("--breakdown", action="store_true",
                     help="also synthesize with the hierarchy kept and record each block's cells (breakdown)")
     args = ap.parse_args()
@@ -311,8 +326,9 @@ def main():
     for m in modes:
         if m not in BOARDS[args.board]["modes"]:
             fail("%s has no mode '%s' (%s)" % (args.board, m, ", ".join(BOARDS[args.board]["modes"])))
-    if not os.access(args.specrom, os.X_OK):
-        fail("%s not found: run 'make build' first" % args.specrom)
+    for tool in (args.specrom, args.setuprom):
+        if not os.access(tool, os.X_OK):
+            fail("%s not found: run 'make build' first" % tool)
     if args.board == "icebreaker":
         tools = {"yosys": ["yosys"], "nextpnr-ice40": ["nextpnr-ice40"], "icepack": ["icepack"]}
         missing = [t for t in ("yosys", "nextpnr-ice40", "icepack") if not shutil.which(t)]

@@ -1,6 +1,8 @@
 // board_shaders.cpp - shader-pass models for the board model (see board_shaders.h).
 #include "board_shaders.h"
 
+#include <memory>
+
 #include "setup_model.h"
 
 namespace spec {
@@ -17,9 +19,10 @@ Shader host_shader(const Model& m, host::GammaRule rule) {
     };
 }
 
-Shader rtl_shader(const Model& m) {
-    static const SetupModel setup;
-    return [&m](const ShadeIn& in) {
+Shader rtl_shader(const Model& m, const SetupFormat& sf) {
+    // the setup's descriptor is the default core format's (the board RTL's spec_setup reads rom/spec_params.vh)
+    const auto setup = std::make_shared<const SetupModel>(sf);
+    return [&m, setup](const ShadeIn& in) {
         SetupInput si;
         for (int k = 0; k < 3; ++k) {
             si.n1[k] = in.n1[size_t(k)];
@@ -30,9 +33,11 @@ Shader rtl_shader(const Model& m) {
         si.n = in.n;
         si.l = in.l;
         si.midpoint = true;
-        return m.span(setup.run(si).regs);
+        return m.span(setup->run(si).regs);
     };
 }
+
+const char* board_setup_config(const std::string& board) { return board == "icebreaker" ? "narrow" : "default"; }
 
 }  // namespace board
 }  // namespace spec

@@ -55,6 +55,7 @@ RunReport run_board_sim(const RunOptions& o) {
     const BoardScene fb_scene = fb ? make_board_scene(o.mode == "128x96" ? "64x48" : "320x240", o.split_k) : scene;
     rep.mode = scene.mode;
     rep.out_bits = fb ? 4 : 8;
+    rep.setup_config = board_setup_config(o.board);
 
     HarnessOptions ho;
     ho.board = o.board;
@@ -103,7 +104,7 @@ RunReport run_board_sim(const RunOptions& o) {
     }
     const BoardScene& drawn = rep.harness.frame_buffer ? fb_scene : scene;
     const int scale = rep.harness.frame_buffer ? 2 : 1;
-    const Shader shader = rtl_shader(core_model());
+    const Shader shader = rtl_shader(core_model(), setup_format_config(rep.setup_config));
     for (int f = 0; f < o.frames; ++f) {
         FrameReport fr;
         fr.frame = unsigned(f);

@@ -90,7 +90,7 @@ void write_run(const RunReport& r) {
       << m.v_sync << ", " << m.v_bp << "], \"pixel_mhz\": " << num(m.pixel_mhz, 5) << ", \"frame_us\": "
       << num(m.frame_us, 3) << ", \"refresh_hz\": " << num(m.refresh_hz, 4) << "},\n"
       << "  \"frame_buffer\": " << (h.frame_buffer ? "true" : "false") << ",\n  \"pll_pixel_mhz\": "
-      << num(h.pll_mhz, 4) << ",\n  \"sim_ms\": " << num(double(h.sim_ps) * 1e-9, 1) << ",\n  \"wall_s\": "
+      << num(h.pll_mhz, 4) << ",\n  \"setup_config\": \"" << r.setup_config << "\",\n  \"sim_ms\": " << num(double(h.sim_ps) * 1e-9, 1) << ",\n  \"wall_s\": "
       << num(h.wall_s, 1) << ",\n  \"render_percent\": "
       << num(h.render_clocks_budget ? 100.0 * h.render_clocks_max / h.render_clocks_budget : 0.0, 1)
       << ",\n  \"render_ms\": " << num(h.render_clocks_max / (h.pll_mhz * 2.0) * 1e-3, 2)
