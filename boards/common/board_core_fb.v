@@ -56,6 +56,7 @@ module board_core_fb #(
     parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 or 0 save the queues' output registers (0: the iCEBreaker)
     parameter META_AW = 8,             // shade_passes' sub-span queue: 1 keeps its 2 words in flip-flops, not a
                                        // block RAM (the shader holds a few sub-spans at a time)
+    parameter PASSES_OUT_REG = 1,      // shade_passes' OUT_REG: 0 = its pixels straight into the write queue
     parameter COMPOSE_STEPS = 3,       // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
     parameter COMPOSE_HOLD = 0         // compose_seq's HOLD: 1 reads the write queue's head in place (no copy)
 ) (
@@ -175,7 +176,7 @@ module board_core_fb #(
     wire [15:0] px_dif, px_spc;
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .BACKEND(SHADER_BACKEND), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+        .OUT_REG(PASSES_OUT_REG), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),
