@@ -102,6 +102,9 @@ verilate(vboard_modules SOURCES ${BC}/compose.v TOP_MODULE compose PREFIX Vcompo
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GOUT_BITS=4 "-GOBJ_FILE=\"${BOARD_GEN}/objects_640x480.hex\"")
 verilate(vboard_modules SOURCES ${BC}/compose_seq.v ${BC}/seq_mul.v TOP_MODULE compose_seq PREFIX Vcompose_seq
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GOUT_BITS=4 -GTAG_W=17 "-GOBJ_FILE=\"${BOARD_GEN}/objects_640x480.hex\"")
+verilate(vboard_modules SOURCES ${BC}/compose_seq.v ${BC}/seq_mul.v TOP_MODULE compose_seq PREFIX Vcompose_seq_hold
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} -GOUT_BITS=4 -GTAG_W=17 -GMUL_STEPS=1 -GHOLD=1
+  "-GOBJ_FILE=\"${BOARD_GEN}/objects_640x480.hex\"")
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3)
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q1

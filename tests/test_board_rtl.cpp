@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <random>
 
@@ -31,9 +32,16 @@ std::vector<SubSpan> rtl_line(BoardDut<V>& d, int y, double p_ready, std::mt1993
     d.tick();
     d->start = 0;
     uint64_t c = 1;
+    bool stalled = false;                // m_valid without m_ready last clock: the beat must not change
+    std::array<uint64_t, 5> held{};
     while (d->busy) {
         d->m_ready = ready(rng);
         d->eval();
+        const std::array<uint64_t, 5> beat{d->m_obj, d->m_x0, d->m_l, d->m_n1, d->m_n2};
+        if (d->m_valid && stalled && beat != held)
+            throw std::runtime_error("sphere_spans: the beat changed while stalled");
+        stalled = d->m_valid && !d->m_ready;
+        held = beat;
         if (d->m_valid && d->m_ready) {
             SubSpan s;
             s.obj = d->m_obj;

@@ -2,7 +2,8 @@
 // frame_store_packed.v: 36-bit words of three pixels, read-modify-write, the ECP5's block RAM) against one
 // definition: a pixel array where commands are applied in order, pixel writes and line clears, and each fetch
 // of a 4-pixel group returns {blue, green, red} words, nibble k the colour of pixel 4g + k. Random commands
-// and fetches at random times (a fetch as soon as the last one is done, often), on a 64 x 48 buffer.
+// and fetches at random times (a fetch as soon as the last one is done, often), on a 64 x 48 buffer. A command
+// is held until taken (AXI4-Stream): frame_store takes it with its last write and keeps no copy of it.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -41,30 +42,36 @@ void store_matches_definition(uint32_t seed) {
     int cleared = 0, commands = 0, fetched = 0, overlapped = 0;
     int pending = -1;               // the group being fetched
     bool busy_seen = false;
-    Cmd inflight;                   // the last command accepted (in progress while cmd_ready is low)
+    Cmd inflight;                   // the last command taken (frame_store_packed: in progress while cmd_ready is
+                                    // low; frame_store takes a command with its last write)
+    Cmd c;                          // the command offered (held until taken, AXI4-Stream)
+    bool offer = false;
+    uint32_t colour = 0;
     std::array<uint32_t, 4> expect{};
     for (int cyc = 0; cyc < 400000 && (cleared < kH || commands < 6000 || fetched < 3000); ++cyc) {
         // a command: a clear of every line first (the memory starts undefined), then mostly pixel writes;
         // never one that touches the group being fetched (the definition would not say which value it sees)
-        Cmd c;
-        c.clear = cleared < kH || rng() % 40 == 0;
-        c.arg = c.clear ? uint32_t(cleared < kH ? cleared : int(rng() % kH)) : rng() % uint32_t(kW * kH);
-        const bool offer = d->cmd_ready && (rng() % 3) != 0 && !(pending >= 0 && c.touches(pending));
-        if (offer) {
-            const uint32_t colour = rng() & 0xfff;
-            d->cmd_clear = c.clear;
-            d->cmd_arg = c.arg;
-            d->cmd_rgb = colour;
-            if (c.clear) {
-                for (int x = 0; x < kW; ++x) px[size_t(c.arg) * kW + size_t(x)] = kBg;
-                if (cleared < kH) ++cleared;
-            } else {
-                px[c.arg] = colour;
+        if (!offer) {
+            c.clear = cleared < kH || rng() % 40 == 0;
+            c.arg = c.clear ? uint32_t(cleared < kH ? cleared : int(rng() % kH)) : rng() % uint32_t(kW * kH);
+            colour = rng() & 0xfff;
+            offer = (rng() % 3) != 0 && !(pending >= 0 && c.touches(pending));
+            if (offer) {
+                if (c.clear) {
+                    for (int x = 0; x < kW; ++x) px[size_t(c.arg) * kW + size_t(x)] = kBg;
+                    if (cleared < kH) ++cleared;
+                } else {
+                    px[c.arg] = colour;
+                }
+                ++commands;
             }
-            inflight = c;
-            ++commands;
         }
+        d->cmd_clear = c.clear;
+        d->cmd_arg = c.arg;
+        d->cmd_rgb = colour;
         d->cmd_valid = offer;
+        d->eval();
+        const bool took = offer && d->cmd_ready;
         // a fetch (once every line is cleared) of a group no command in progress or offered touches
         bool fetch = false;
         if (cleared == kH && pending < 0 && !d->fetch_busy && (rng() % 4) == 0) {
@@ -80,6 +87,10 @@ void store_matches_definition(uint32_t seed) {
         }
         d->fetch = fetch;
         d.tick();
+        if (took) {
+            inflight = c;
+            offer = false;
+        }
         d->cmd_valid = 0;
         d->fetch = 0;
         if (d->fetch_busy) busy_seen = true;

@@ -56,7 +56,9 @@ module board_core_fb #(
     parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: 1 or 0 save the queues' output registers (0: the iCEBreaker)
     parameter META_AW = 8,             // shade_passes' sub-span queue: 1 keeps its 2 words in flip-flops, not a
                                        // block RAM (the shader holds a few sub-spans at a time)
-    parameter COMPOSE_STEPS = 3        // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
+    parameter PASSES_OUT_REG = 1,      // shade_passes' OUT_REG: 0 = its pixels straight into the write queue
+    parameter COMPOSE_STEPS = 3,       // compose_seq's multiplier bits a clock (1, 3 or 9): 1 is the smallest
+    parameter COMPOSE_HOLD = 0         // compose_seq's HOLD: 1 reads the write queue's head in place (no copy)
 ) (
     input  wire        clk,
     input  wire        rst_n,
@@ -174,7 +176,7 @@ module board_core_fb #(
     wire [15:0] px_dif, px_spc;
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .BACKEND(SHADER_BACKEND), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+        .OUT_REG(PASSES_OUT_REG), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),
@@ -226,7 +228,8 @@ module board_core_fb #(
         else if (q_push && !q_ready) error <= 1'b1;
     end
     assign cmd_ready = q_ready;
-    compose_seq #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .OUT_BITS(4), .TAG_W(T_W), .MUL_STEPS(COMPOSE_STEPS), .OBJ_FILE(OBJ_FILE))
+    compose_seq #(.N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .OUT_BITS(4), .TAG_W(T_W), .MUL_STEPS(COMPOSE_STEPS), .HOLD(COMPOSE_HOLD),
+                  .OBJ_FILE(OBJ_FILE))
     u_compose (
         .clk(clk), .rst_n(rst_n), .s_valid(c_valid), .s_ready(c_ready), .s_bypass(c_data[CMD_W-1]),
         .s_tag(c_data[OBJ_W + 32 +: T_W]), .s_obj(c_data[32 +: OBJ_W]), .s_dif(c_data[31:16]),

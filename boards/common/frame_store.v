@@ -6,7 +6,9 @@
 // p % 4 of word c * PLANE + p / 4. A fetch of group g reads the three words of pixels 4g .. 4g + 3.
 // Commands (AXI4-Stream, one per beat): cmd_clear = 0: write cmd_rgb ({r, g, b}) to pixel cmd_arg (three
 // nibble writes); cmd_clear = 1: write the background BG_RGB to the FB_W pixels of line cmd_arg (whole
-// words). Commands are applied in order, in cycles the reader does not need.
+// words). Commands are applied in order, in cycles the reader does not need. A command is read where it is,
+// not copied (the writer holds no command register): it is taken (cmd_ready) in the clock of its last write,
+// and AXI4-Stream keeps it stable until then. cmd_ready therefore depends on the reader, not on cmd_valid.
 // Fetch: fetch (with fetch_group, a word index within a plane) while fetch_busy = 0; the three words arrive
 // in group (and group_valid pulses) a few cycles later: reads take the memory ahead of writes.
 // Reset: rst_n is synchronous, active low: idle. The memory is not cleared (the renderer writes every
@@ -72,14 +74,16 @@ module frame_store #(
     wire reading = (rd_n != 2'd0);
 
     // ---- the writer ---------------------------------------------------------------------------------------
-    reg w_busy, w_clear;
+    reg w_busy;                        // the command at the input is being written (w_plane, w_word, w_left set)
+    wire w_clear = cmd_clear;
     reg [1:0] w_plane;
     reg [A_W-1:0] w_word;              // word within the plane
-    reg [1:0] w_nib;
-    reg [11:0] w_rgb;
+    wire [1:0] w_nib = cmd_arg[1:0];
+    wire [11:0] w_rgb = cmd_rgb;
     reg [$clog2(GW + 1)-1:0] w_left;   // clear: words left in this plane's line
-    reg [A_W-1:0] w_line_word;         // clear: the line's first word in a plane
-    assign cmd_ready = !w_busy;
+    wire w_more = w_clear && w_left != {{($clog2(GW + 1) - 1) {1'b0}}, 1'b1};   // more words in this plane
+    // the command's last write is this clock: it is taken
+    assign cmd_ready = w_busy && !reading && !w_more && w_plane == 2'd2;
     localparam L_W = $clog2(FB_H);
     localparam [A_W-1:0] GW_A = GW[A_W-1:0];
     // the line's first word: line * GW by shifts and adds over GW's set bits (a constant: no DSP)
@@ -142,23 +146,19 @@ module frame_store #(
             if (!w_busy) begin
                 if (cmd_valid) begin
                     w_busy <= 1'b1;
-                    w_clear <= cmd_clear;
                     w_plane <= 2'd0;
-                    w_rgb <= cmd_rgb;
-                    w_nib <= cmd_arg[1:0];
                     w_word <= cmd_clear ? line_word0 : {{(A_W - P_W + 2) {1'b0}}, cmd_arg[P_W-1:2]};
-                    w_line_word <= line_word0;
                     w_left <= GW[$clog2(GW + 1)-1:0];
                 end
             end else if (!reading) begin
                 // one nibble (pixel) or one word (clear) written this cycle
-                if (w_clear && w_left != {{($clog2(GW + 1) - 1) {1'b0}}, 1'b1}) begin
+                if (w_more) begin
                     w_left <= w_left - 1'b1;
                     w_word <= w_word + 1'b1;
                 end else if (w_plane != 2'd2) begin
                     w_plane <= w_plane + 2'd1;
                     w_left <= GW[$clog2(GW + 1)-1:0];
-                    if (w_clear) w_word <= w_line_word;
+                    if (w_clear) w_word <= line_word0;
                 end else begin
                     w_busy <= 1'b0;
                 end

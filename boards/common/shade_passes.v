@@ -9,6 +9,9 @@
 // The light vectors l_* (L) and h_* (H) are the frame's, Q1.14, held by the caller while spans flow.
 // Output: one pixel pair per clock at most, no backpressure (compose always takes it): the sphere, the pixel's
 // x (x0 + i), both terms UQ0.16, m_last on a sub-span's last pixel.
+// OUT_REG = 0 (where logic cells are short: the iCEBreaker, whose sink is a queue's write port): no output
+// register; the pair leaves in the clock it is made, read where it is (the diffuse queue's head, the shader's
+// output, the sub-span queue's head), a clock earlier and the same pixels. OUT_REG = 1: registered outputs.
 // Reset: rst_n is synchronous, active low: empty, no output.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -26,7 +29,8 @@ module shade_passes #(
     parameter EXP2_FILE = "",
     parameter FIFO_LUTRAM = 0,         // sync_fifo's LUTRAM: the queues in distributed RAM
     parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: its output queue's entries (0, 1 or 3)
-    parameter META_AW = 8              // the sub-spans' queue (object, x0): 2^META_AW + 2 or + 3 entries
+    parameter META_AW = 8,             // the sub-spans' queue (object, x0): 2^META_AW + 2 or + 3 entries
+    parameter OUT_REG = 1              // 0: the outputs are not registered (see above)
 ) (
     input  wire               clk,
     input  wire               rst_n,
@@ -39,12 +43,12 @@ module shade_passes #(
     input  wire [47:0]        s_n2,
     input  wire signed [15:0] l_x, l_y, l_z,
     input  wire signed [15:0] h_x, h_y, h_z,
-    output reg                m_valid,
-    output reg  [OBJ_W-1:0]   m_obj,
-    output reg  [X_W-1:0]     m_x,
-    output reg  [15:0]        m_dif,
-    output reg  [15:0]        m_spc,
-    output reg                m_last
+    output wire               m_valid,
+    output wire [OBJ_W-1:0]   m_obj,
+    output wire [X_W-1:0]     m_x,
+    output wire [15:0]        m_dif,
+    output wire [15:0]        m_spc,
+    output wire               m_last
 );
     generate
         if (SHADERS != 1 && SHADERS != 2) begin : g_bad_params
@@ -165,18 +169,30 @@ module shade_passes #(
 
     reg [9:0] i;                 // pixel of the sub-span
     always @(posedge clk) begin
-        if (!rst_n) begin
-            m_valid <= 1'b0;
-            i <= 10'd0;
-        end else begin
-            m_valid <= pair;
-            if (pair) i <= s_out_last ? 10'd0 : i + 10'd1;
-        end
-        m_obj <= meta[OBJ_W+X_W-1:X_W];
-        m_x <= meta[X_W-1:0] + {{(X_W - 10) {1'b0}}, i};
-        m_dif <= dq_data;
-        m_spc <= s_out_data;
-        m_last <= s_out_last;
+        if (!rst_n) i <= 10'd0;
+        else if (pair) i <= s_out_last ? 10'd0 : i + 10'd1;
     end
+    wire [OBJ_W-1:0] obj_d = meta[OBJ_W+X_W-1:X_W];
+    wire [X_W-1:0] x_d = meta[X_W-1:0] + {{(X_W - 10) {1'b0}}, i};
+    generate
+        if (OUT_REG != 0) begin : g_out_reg
+            reg v_q, last_q;
+            reg [OBJ_W-1:0] obj_q;
+            reg [X_W-1:0] x_q;
+            reg [15:0] dif_q, spc_q;
+            always @(posedge clk) begin
+                if (!rst_n) v_q <= 1'b0;
+                else v_q <= pair;
+                obj_q <= obj_d;
+                x_q <= x_d;
+                dif_q <= dq_data;
+                spc_q <= s_out_data;
+                last_q <= s_out_last;
+            end
+            assign {m_valid, m_obj, m_x, m_dif, m_spc, m_last} = {v_q, obj_q, x_q, dif_q, spc_q, last_q};
+        end else begin : g_out_wire
+            assign {m_valid, m_obj, m_x, m_dif, m_spc, m_last} = {pair, obj_d, x_d, dq_data, s_out_data, s_out_last};
+        end
+    endgenerate
 endmodule
 `default_nettype wire

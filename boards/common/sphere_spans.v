@@ -22,7 +22,10 @@
 // SERIAL = 1 (where logic cells are short: the iCEBreaker, whose shader takes thousands of clocks a sub-span):
 // stage A1 starts a sphere or a split point only when the stages after it are empty, so a token's x0, DY, p, DX
 // and W2 stay in A1's registers while it runs, and the stages read them there instead of carrying copies
-// (about 5 x 50 flip-flops fewer). The same sub-spans, a few clocks more per point.
+// (about 5 x 50 flip-flops fewer). The same sub-spans, a few clocks more per point. Nor does A1 start one while
+// the output holds a sub-span (m_valid): the sub-span's last point then stays in stage C's registers and A1's
+// until it is taken, so m_n2 and m_obj are read there (no output register), and m_n1, the point before, is
+// loaded from there once the sub-span is taken (or at a chord's first point).
 // Reset: rst_n is synchronous, active low: idle, no output.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -46,11 +49,11 @@ module sphere_spans #(
     output reg              busy,      // (combinational: any stage holds work)
     output reg              m_valid,
     input  wire             m_ready,
-    output reg  [OBJ_W-1:0] m_obj,
+    output wire [OBJ_W-1:0] m_obj,
     output reg  [X_W-1:0]   m_x0,      // first pixel
     output reg  [9:0]       m_l,       // intervals: pixels m_x0 .. m_x0 + m_l
     output reg  [47:0]      m_n1,      // {z, y, x} at the first pixel, signed 16 bits each
-    output reg  [47:0]      m_n2       // ... at the last pixel
+    output wire [47:0]      m_n2       // ... at the last pixel
 );
     localparam R_W = 9;                // r2 = 2r <= 510
     localparam F = 8;                  // fraction bits of the split table: v_j in 0 .. 256, R_W bits
@@ -141,7 +144,8 @@ module sphere_spans #(
 
     // SERIAL: a sphere (A_OBJ) or a point (A_P) starts only when no token is in the stages after A1: x0, dy, w2
     // (set after A_OBJ), p and dx (set after A_P) then hold while their token runs
-    wire a1_hold = (SERIAL != 0) && (a2_v || b_v || sq_run || c_v);
+    // (and, with the output read in place, not while the output holds a sub-span: m_valid)
+    wire a1_hold = (SERIAL != 0) && (a2_v || b_v || sq_run || c_v || m_valid);
     always @(posedge clk) begin
         mul_start <= 1'b0;
         if (!rst_n) begin
@@ -382,23 +386,34 @@ module sphere_spans #(
     wire signed [15:0] dx16 = {{(16 - R_W - 2) {c_dx[R_W+1]}}, c_dx};
     wire signed [15:0] dy16 = {{3{c_dy[12]}}, c_dy};
     wire [47:0] n_cur = {{(16 - Z_W) {1'b0}}, c_z, dy16 <<< ZF, dx16 <<< ZF};
-    // the previous point's normal is m_n2: every take loads it (a chord's first point too, while m_valid = 0)
+    // SERIAL = 0: the previous point's normal is the output register n2_q: every take loads it (a chord's first
+    // point too, while m_valid = 0), and m_n1 takes it with the next point. SERIAL = 1: the point stays in stage
+    // C and A1 while the sub-span is held (a1_hold), so m_n2 is n_cur and m_obj c_obj, read there; m_n1 loads
+    // n_cur at a chord's first point and when a sub-span is taken (its last point is the next one's first)
     reg [R_W-1:0] cp_prev;
+    reg [47:0] n2_q;
+    reg [OBJ_W-1:0] obj_q;
+    assign m_n2 = (SERIAL != 0) ? n_cur : n2_q;
+    assign m_obj = (SERIAL != 0) ? c_obj : obj_q;
     assign c_take = c_v && !m_valid;   // the output register is empty (m_ready does not reach further back)
     always @(posedge clk) begin
         if (!rst_n) begin
             m_valid <= 1'b0;
         end else begin
-            if (m_valid && m_ready) m_valid <= 1'b0;
+            if (m_valid && m_ready) begin
+                m_valid <= 1'b0;
+                if (SERIAL != 0) m_n1 <= n_cur;
+            end
             if (c_take) begin
                 cp_prev <= c_p;
-                m_n2 <= n_cur;
+                if (SERIAL == 0) n2_q <= n_cur;
+                else if (c_first) m_n1 <= n_cur;
                 if (!c_first) begin
                     m_valid <= 1'b1;
-                    m_obj <= c_obj;
+                    obj_q <= c_obj;
                     m_x0 <= c_x0 + {{(X_W - R_W) {1'b0}}, cp_prev};
                     m_l <= {{(10 - R_W) {1'b0}}, c_p - cp_prev};
-                    m_n1 <= m_n2;
+                    if (SERIAL == 0) m_n1 <= n2_q;
                 end
             end
         end

@@ -73,6 +73,7 @@ module icebreaker_top #(
         .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
         .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
         .MUL_STEPS(1), .SQRT_STEPS(1), .SPANS_SERIAL(1), .SHADER_SMALL(1), .SHADER_BACKEND(1), .FIFO_QUEUE(0), .META_AW(1), .COMPOSE_STEPS(1),
+        .COMPOSE_HOLD(1), .PASSES_OUT_REG(0),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .error(error),
