@@ -372,7 +372,6 @@ board-tables: build
 	$(BUILD)/boardsim-quick gen --out-dir boards/common/gen
 
 lint-boards: deps configure
-	@$(call cmake_build,$(BUILD),--target rom_setup_narrow) > /dev/null
 	@for top in $(basename $(notdir $(BOARD_RTL))); do \
 	    verilator --lint-only -Wall -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) --top-module $$top \
 	        || exit 1; echo "  $$top: clean"; \
