@@ -283,12 +283,17 @@ def place(board, mode, device, synth_res, net, args, tools, out):
         # packing can need more logic cells than LUT4s: a flip-flop whose input is not a LUT's output takes a
         # cell of its own (the count is in the log, before placement fails)
         with open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))) as f:
-            lc = synth.packed_lc(f.read())
+            log = f.read()
+        lc = synth.packed_lc(log)
         if lc:
             res["lc"] = lc[0]
             if lc[0] > lc[1]:
                 res["fits"] = False
                 res["note"] = "does not fit after packing: %d logic cells of %d (nextpnr)" % lc
+            elif "Unable to find legal placement" in log:
+                # packed within the device, but the placer found no legal place for every cell
+                res["fits"] = False
+                res["note"] = "packs into %d logic cells of %d, but nextpnr finds no legal placement" % lc
         return res
     r = json.load(open(os.path.join(ROOT, rep)))
     res["clocks"] = nextpnr_clocks(r)
