@@ -35,7 +35,7 @@ target_compile_options(boardmodel PRIVATE ${WARN})
 function(board_file_args out mode k setup)
   set(${out} -I${setup} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
     "-GOBJ_FILE=\"${BOARD_GEN}/objects_${mode}.hex\"" "-GSHADE_FILE=\"${BOARD_GEN}/shade_${mode}.hex\""
-    "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
+    "-GLIGHT_FILE=\"${BOARD_GEN}/light_xy.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
     "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k}
     "-GLOG2_FILE=\"${setup}/setup_log2.hex\"" "-GEXP2_FILE=\"${setup}/setup_exp2.hex\"" PARENT_SCOPE)
 endfunction()
@@ -111,8 +111,8 @@ verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vs
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=1)
 verilate(vboard_modules SOURCES ${BC}/sync_fifo.v TOP_MODULE sync_fifo PREFIX Vsync_fifo_q0
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GW=16 -GAW=3 -GQUEUE=0)
-verilate(vboard_modules SOURCES ${BC}/light_gen.v ${BC}/seq_mul.v TOP_MODULE light_gen PREFIX Vlight_gen
-  VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GSIN_FILE=\"${BOARD_GEN}/light_sin.hex\"")
+verilate(vboard_modules SOURCES ${BC}/light_gen.v TOP_MODULE light_gen PREFIX Vlight_gen
+  VERILATOR_ARGS ${BOARD_MOD_ARGS} "-GLIGHT_FILE=\"${BOARD_GEN}/light_xy.hex\"")
 verilate(vboard_modules SOURCES ${BC}/frame_store.v TOP_MODULE frame_store PREFIX Vframe_store
   VERILATOR_ARGS ${BOARD_MOD_ARGS} -GFB_W=64 -GFB_H=48 -GP_W=12)
 verilate(vboard_modules SOURCES ${BC}/frame_store_packed.v TOP_MODULE frame_store_packed PREFIX Vframe_store_packed

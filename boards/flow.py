@@ -118,7 +118,7 @@ def yosys_script(b, mode, rom_dir, setup_dir, json_out, stat_out, synth_cmd):
     strings = {
         "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"][mode]),
         "OBJ_FILE": "%s/objects_%s.hex" % (GEN, sm), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, sm),
-        "SIN_FILE": "%s/light_sin.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
+        "LIGHT_FILE": "%s/light_xy.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
         "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": setup_dir + "/setup_log2.hex",
         "EXP2_FILE": setup_dir + "/setup_exp2.hex",
     }

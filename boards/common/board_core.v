@@ -38,10 +38,8 @@ module board_core #(
     parameter SPLIT_FILE = "",
     parameter OBJ_FILE = "",
     parameter SHADE_FILE = "",
-    parameter SIN_FILE = "",
-    parameter SIN_E = 10531,
+    parameter LIGHT_FILE = "",
     parameter COS_E = 12551,
-    parameter SIN_HALF_E = 5604,
     parameter COS_HALF_E = 15396,
     // renderer
     parameter MUL_STEPS = 1,
@@ -117,7 +115,7 @@ module board_core #(
     reg light_go;
     always @(posedge clk) light_go <= rst_n & frame_ev;
     light_gen #(
-        .SIN_E(SIN_E), .COS_E(COS_E), .SIN_HALF_E(SIN_HALF_E), .COS_HALF_E(COS_HALF_E), .SIN_FILE(SIN_FILE)
+        .COS_E(COS_E), .COS_HALF_E(COS_HALF_E), .LIGHT_FILE(LIGHT_FILE)
     ) u_light (
         .clk(clk), .rst_n(rst_n), .start(light_go), .f(frame), .busy(light_busy),
         .l_x(l_x), .l_y(l_y), .l_z(l_z), .h_x(h_x), .h_y(h_y), .h_z(h_z)

@@ -33,7 +33,7 @@ module ulx3s_top #(
     parameter SPLIT_FILE = "boards/common/gen/split_32.hex",
     parameter OBJ_FILE = "boards/common/gen/objects_640x480.hex",
     parameter SHADE_FILE = "boards/common/gen/shade_640x480.hex",
-    parameter SIN_FILE = "boards/common/gen/light_sin.hex",
+    parameter LIGHT_FILE = "boards/common/gen/light_xy.hex",
     parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
     parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex",
     parameter LOG2_FILE = "rom/setup_log2.hex",
@@ -81,9 +81,8 @@ module ulx3s_top #(
                 .H_ACTIVE(H_ACTIVE), .H_FP(H_FP), .H_SYNC(H_SYNC), .H_BP(H_BP), .V_ACTIVE(V_ACTIVE),
                 .V_FP(V_FP), .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
                 .BG_RGB(`BOARD_BG_RGB4), .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE),
-                .SPLIT_FILE(SPLIT_FILE), .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE),
-                .SIN_E(`BOARD_SIN_E), .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E),
-                .COS_HALF_E(`BOARD_COS_HALF_E), .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1),
+                .SPLIT_FILE(SPLIT_FILE), .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .LIGHT_FILE(LIGHT_FILE),
+                .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E), .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1),
                 .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
                 .STORE_PACKED(1), .FIFO_LUTRAM(1)
             ) u_core (
@@ -98,8 +97,8 @@ module ulx3s_top #(
                 .V_FP(V_FP), .V_SYNC(V_SYNC), .V_BP(V_BP), .H_POL(H_POL), .V_POL(V_POL),
                 .OUT_BITS(8), .BG_RGB(`BOARD_BG_RGB8),
                 .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
-                .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .SIN_FILE(SIN_FILE), .SIN_E(`BOARD_SIN_E),
-                .COS_E(`BOARD_COS_E), .SIN_HALF_E(`BOARD_SIN_HALF_E), .COS_HALF_E(`BOARD_COS_HALF_E),
+                .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .LIGHT_FILE(LIGHT_FILE),
+                .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E),
                 .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS((MODE == 1) ? 2 : 1),
                 .SHADER_SMALL(0), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
                 .EXP2_FILE(EXP2_FILE)

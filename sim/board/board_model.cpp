@@ -60,6 +60,23 @@ std::vector<SubSpan> line_spans(const BoardScene& s, int y) {
     return out;
 }
 
+namespace {
+// round(mag k / 2^14), half up (mag, k >= 0)
+uint32_t light_product(uint32_t mag, int32_t k) {
+    const uint64_t p = uint64_t(mag) * uint64_t(k);
+    return uint32_t((p >> 14) + ((p >> 13) & 1u));
+}
+}  // namespace
+
+std::vector<uint32_t> light_table(const Quant& q) {
+    std::vector<uint32_t> t(256, 0u);
+    for (size_t i = 0; i < q.quarter_sin.size() && i < 128; ++i) {
+        t[i] = light_product(q.quarter_sin[i], q.sin_e);
+        t[128 + i] = light_product(q.quarter_sin[i], q.sin_half_e);
+    }
+    return t;
+}
+
 LightQ light_q(const Quant& q, unsigned frame) {
     const unsigned t = frame & 255u;
     auto wave = [&](unsigned a, bool* neg) {   // |sin(2 pi a / 256)| from the quarter wave, and its sign
@@ -69,8 +86,7 @@ LightQ light_q(const Quant& q, unsigned frame) {
         return q.quarter_sin[(a & 64u) ? 64 - i : i];
     };
     auto mul = [](uint32_t mag, int32_t k, bool neg) {   // round(mag k / 2^14) with the sign
-        const uint64_t p = uint64_t(mag) * uint64_t(k);
-        const int32_t r = int32_t((p >> 14) + ((p >> 13) & 1u));
+        const int32_t r = int32_t(light_product(mag, k));
         return neg ? -r : r;
     };
     bool ns = false, nc = false;

@@ -34,6 +34,9 @@ struct LightQ {
     std::array<int32_t, 3> l{}, h{};
 };
 LightQ light_q(const Quant& q, unsigned frame);
+// light_gen.v's table (LIGHT_FILE, 256 words): word i (0..64) = the quarter wave's word i times sin E, word
+// 128 + i times sin(E/2), each as light_q rounds it (half up, / 2^14); the other words 0.
+std::vector<uint32_t> light_table(const Quant& q);
 
 // compose.v: a pixel's channels at out_bits from its diffuse and specular terms (UQ0.16).
 std::array<uint32_t, 3> compose(const ObjQuant& o, uint32_t dif, uint32_t spc, int out_bits);

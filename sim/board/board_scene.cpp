@@ -206,8 +206,8 @@ std::vector<std::string> write_rtl_tables(const std::string& dir, const std::vec
     }
     vh << "// the scene: spheres, light, background\n"
        << "`define BOARD_N_OBJ " << any.spheres.size() << "\n"
-       << "`define BOARD_SIN_E " << q.sin_e << "\n`define BOARD_COS_E " << q.cos_e << "\n"
-       << "`define BOARD_SIN_HALF_E " << q.sin_half_e << "\n`define BOARD_COS_HALF_E " << q.cos_half_e << "\n"
+       << "// the light's z components (x and y: light_xy.hex)\n"
+       << "`define BOARD_COS_E " << q.cos_e << "\n`define BOARD_COS_HALF_E " << q.cos_half_e << "\n"
        << "`define BOARD_BG_RGB4 12'h" << hex(bg4, 3) << "\n`define BOARD_BG_RGB8 24'h" << hex(bg8, 6) << "\n"
        << "`endif\n";
     for (int k : ks) {
@@ -218,9 +218,10 @@ std::vector<std::string> write_rtl_tables(const std::string& dir, const std::vec
     }
     {
         std::ostringstream o;
-        o << "// round(16384 sin(pi i / 128)), i = 0..64 (boardsim gen)\n";
-        for (unsigned v : q.quarter_sin) o << hex(v, 4) << "\n";
-        emit("light_sin.hex", o.str());
+        o << "// light_gen.v's table: word i = round(s_i sin E), word 128 + i = round(s_i sin(E/2)), s_i =\n"
+          << "// round(16384 sin(pi i / 128)), i = 0..64, Q1.14, rounded half up; the other words 0 (boardsim gen)\n";
+        for (uint32_t v : light_table(q)) o << hex(v, 4) << "\n";
+        emit("light_xy.hex", o.str());
     }
     emit("board_params.vh", vh.str());
     return names;

@@ -58,7 +58,7 @@ void check_scene(const BoardScene& s);
 
 // boardgen: the tables the RTL reads, as $readmemh files, and a Verilog header of the scalar constants, into
 // dir: scene_<mode>.hex, objects_<mode>.hex, shade_<mode>.hex for both modes, split_<k>.hex for each k,
-// light_sin.hex, board_params.vh. Returns the file names written.
+// light_xy.hex, board_params.vh. Returns the file names written.
 std::vector<std::string> write_rtl_tables(const std::string& dir, const std::vector<int>& ks);
 
 }  // namespace board

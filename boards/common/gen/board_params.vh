@@ -39,9 +39,8 @@
 // frame buffer 64x48: tables only
 // the scene: spheres, light, background
 `define BOARD_N_OBJ 5
-`define BOARD_SIN_E 10531
+// the light's z components (x and y: light_xy.hex)
 `define BOARD_COS_E 12551
-`define BOARD_SIN_HALF_E 5604
 `define BOARD_COS_HALF_E 15396
 `define BOARD_BG_RGB4 12'h111
 `define BOARD_BG_RGB8 24'h0d0f17
