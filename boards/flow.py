@@ -82,8 +82,8 @@ BOARDS = {
         # the setup's format (setuprom --config; docs/boards.md): narrow on the iCEBreaker's 4-bit picture
         "setup_config": "narrow",
         "split_k": {"640x480": 8}, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
-        # the design clock (PLL: 12 MHz x 67 / 16); nextpnr derives no PLL output constraint here
-        "freq_mhz": {"640x480": 50.25},
+        # the design clock, the pixel clock (PLL: 12 MHz x 67 / 32); nextpnr derives no PLL output constraint here
+        "freq_mhz": {"640x480": 25.125},
         "cells": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"],
                   "spram": [r"SB_SPRAM256KA"]},
         "limits": {"up5k": {"lut": 5280, "bram": 30, "dsp": 8}},

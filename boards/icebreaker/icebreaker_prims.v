@@ -10,8 +10,8 @@
 
 // icebreaker_pll - 12 MHz from the board's oscillator (pin 35, the PLL's input pad) to the design clock.
 // SB_PLL40_PAD, simple feedback: F_out = 12 MHz x (DIVF + 1) / ((DIVR + 1) x 2^DIVQ) with the VCO
-// (12 MHz x (DIVF + 1) / (DIVR + 1)) within 533..1066 MHz: DIVR = 0, DIVF = 66, DIVQ = 4 give
-// 12 x 67 / 16 = 50.25 MHz (VCO 804 MHz), twice the pixel clock of 25.125 MHz (VESA: 25.175 MHz, -0.2 %).
+// (12 MHz x (DIVF + 1) / (DIVR + 1)) within 533..1066 MHz: DIVR = 0, DIVF = 66, DIVQ = 5 give
+// 12 x 67 / 32 = 25.125 MHz (VCO 804 MHz), the pixel clock (VESA 640 x 480 at 60 Hz: 25.175 MHz, -0.2 %).
 // FILTER_RANGE = 1 for the 12 MHz phase detector input.
 module icebreaker_pll (
     input  wire pin_12mhz,
@@ -23,7 +23,7 @@ module icebreaker_pll (
         .FEEDBACK_PATH("SIMPLE"),
         .DIVR(4'd0),
         .DIVF(7'd66),
-        .DIVQ(3'd4),
+        .DIVQ(3'd5),
         .FILTER_RANGE(3'd1)
     ) u_pll (
         .PACKAGEPIN(pin_12mhz),
@@ -35,35 +35,29 @@ module icebreaker_pll (
     );
 endmodule
 
-// icebreaker_dvi_pins - the 16 pins of the 12-bit DVI Pmod, each driven from the output flip-flop of its
-// I/O cell (SB_IO, PIN_TYPE 0101_01: registered output, no output enable), so that all pins switch together
-// at the pad. The flip-flops load every cycle (the two I/O cells of a tile share one clock enable, and the
-// Pmod's pins share tiles), from fabric registers: data = {r[3:0], g[3:0], b[3:0], hsync, vsync, de} is taken
-// into them in cycles with load = 1, clk_next every cycle; the pins follow one clock later.
+// icebreaker_dvi_pins - the 16 pins of the 12-bit DVI Pmod at one pixel a clock. The 15 data pins are driven
+// from the output flip-flops of their I/O cells (SB_IO, PIN_TYPE 0101_01: registered output, no output
+// enable), loaded every rising edge of clk with data = {r[3:0], g[3:0], b[3:0], hsync, vsync, de} (fabric
+// registers), so that all pins switch together at the pad, one clock after data. The pixel clock pin is a
+// DDR output (PIN_TYPE 0100_01: D_OUT_0 shown from the rising edge, D_OUT_1 from the falling edge) of 0 and
+// 1: the inverse of clk, rising at clk's falling edge, in the middle of each pixel, where the Pmod's TFP410
+// samples (half a pixel, 19.9 ns, of setup and of hold).
 module icebreaker_dvi_pins (
     input  wire        clk,
-    input  wire        load,
     input  wire [14:0] data,
-    input  wire        clk_next,
     output wire [14:0] pins,
     output wire        pin_clk
 );
-    reg [14:0] data_q;
-    reg clk_q;
-    always @(posedge clk) begin
-        if (load) data_q <= data;
-        clk_q <= clk_next;
-    end
     genvar i;
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_pin
             SB_IO #(.PIN_TYPE(6'b0101_01)) u_io (
-                .PACKAGE_PIN(pins[i]), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(data_q[i])
+                .PACKAGE_PIN(pins[i]), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(data[i]), .D_OUT_1(1'b0)
             );
         end
     endgenerate
-    SB_IO #(.PIN_TYPE(6'b0101_01)) u_clk (
-        .PACKAGE_PIN(pin_clk), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(clk_q)
+    SB_IO #(.PIN_TYPE(6'b0100_01)) u_clk (
+        .PACKAGE_PIN(pin_clk), .CLOCK_ENABLE(1'b1), .OUTPUT_CLK(clk), .D_OUT_0(1'b0), .D_OUT_1(1'b1)
     );
 endmodule
 /* verilator lint_on DECLFILENAME */

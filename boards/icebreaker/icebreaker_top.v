@@ -4,10 +4,10 @@
 // (board_core_fb: the small setup takes one span at a time, too slow to race the beam). The shader's back end
 // is the compact spec_stream_seq (one span at a time too): spec_stream's flip-flops do not fit the UP5K.
 //
-// Clocks: one domain, clk = 50.25 MHz from the PLL (icebreaker_prims.v), twice the pixel clock; pix_ce
-// marks every other cycle. The Pmod's pixel clock (25.125 MHz) is made by an I/O flip-flop that follows
-// pix_ce: it rises at the edges that end pix_ce cycles, the data pins change at the edges between, so the
-// transmitter samples in the middle of each pixel (half a pixel of setup and of hold, 19.9 ns).
+// Clocks: one domain, clk = 25.125 MHz from the PLL (icebreaker_prims.v), the pixel clock: a pixel every
+// cycle (pix_ce = 1), the renderer runs at the same clock. The data pins change at clk's rising edges; the
+// Pmod's pixel clock is the inverse of clk from a DDR I/O cell, rising in the middle of each pixel, where the
+// transmitter samples (half a pixel of setup and of hold, 19.9 ns).
 // Reset: the PLL's lock and the user button (BTN_N, low while pressed) through a two-flop synchronizer.
 // LEDs (active low): red = the frame buffer's write queue overflowed (sticky; board_core_fb's error), green
 // changes with every rendered frame.
@@ -46,11 +46,7 @@ module icebreaker_top #(
     wire rst_n;
     cdc_sync #(.STAGES(2)) u_rst (.clk(clk), .rst_n(locked), .d(BTN_N), .q(rst_n));
 
-    reg pix_ce;
-    always @(posedge clk) begin
-        if (!rst_n) pix_ce <= 1'b0;
-        else pix_ce <= ~pix_ce;
-    end
+    wire pix_ce = 1'b1;                  // a pixel every cycle
 
     localparam H_ACTIVE = TEST ? `BOARD128_H_ACTIVE : `BOARD640_H_ACTIVE;
     localparam H_FP = TEST ? `BOARD128_H_FP : `BOARD640_H_FP;
@@ -82,7 +78,7 @@ module icebreaker_top #(
 
     wire [14:0] pins;
     icebreaker_dvi_pins u_pins (
-        .clk(clk), .load(~pix_ce), .data({rgb, hs, vs, de}), .clk_next(pix_ce), .pins(pins), .pin_clk(dvi_clk)
+        .clk(clk), .data({rgb, hs, vs, de}), .pins(pins), .pin_clk(dvi_clk)
     );
     assign {dvi_r, dvi_g, dvi_b, dvi_hs, dvi_vs, dvi_de} = pins;
     assign LEDR_N = ~error;

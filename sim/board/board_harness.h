@@ -28,6 +28,7 @@ struct HarnessResult {
     uint64_t time_slots = 0;          // model evaluations
     double wall_s = 0;
     double pll_mhz = 0;               // the pixel clock the board's PLL settings promise
+    double design_mhz = 0;            // the design clock (the renderer's), from the same settings
     bool late = false;                // board_core's flag (a LED): a line was not rendered in time
     bool out_of_step = false;         // ulx3s: the serializer lost the pixel clock's phase (a LED)
     int render_clocks_max = 0;        // longest line render (racing the beam) or frame render (frame buffer),

@@ -62,13 +62,15 @@ RunReport run_board_sim(const RunOptions& o) {
     ho.mode = o.mode;
     ho.frames = o.frames;
     // time for the reset, the blanking before the first frame and the frames, at the slowest pixel clock, x 1.5;
-    // with a frame buffer, the rendered frames at 1000 clocks of 50.25 MHz per shader pass (a span takes about 960, make bench)
+    // with a frame buffer, the rendered frames at 1000 design clocks per shader pass (a span takes about 960,
+    // make bench): the iCEBreaker's design clock is its pixel clock, the ULX3S's 640 x 480 twice its pixel clock
     const double frame_ps = double(scene.mode.h_total()) * scene.mode.v_total() / (0.9 * scene.mode.pixel_mhz) * 1e6;
     ho.limit_ps = uint64_t((o.frames + 1.2) * frame_ps * 1.5) + 20000000ull;
     if (fb) {
         uint64_t spans = 0;
         for (int y = 0; y < fb_scene.mode.v_active; ++y) spans += line_spans(fb_scene, y).size();
-        const double render_ps = double(spans) * 2.0 * 1000.0 / 50.25e6 * 1e12;
+        const double design_mhz = (o.board == "icebreaker") ? scene.mode.pixel_mhz * 0.9 : 2.0 * scene.mode.pixel_mhz * 0.9;
+        const double render_ps = double(spans) * 2.0 * 1000.0 / (design_mhz * 1e6) * 1e12;
         ho.limit_ps += uint64_t((o.frames + 1) * (render_ps + 2 * frame_ps) * 1.5);
     }
     VideoCapture cap(rep.out_bits);

@@ -39,7 +39,7 @@ void print_run(const RunReport& r) {
     std::printf("\nvideo timing (measured at the pins | %s):\n", r.mode.standard.c_str());
     for (const std::string& row : r.timing.rows) std::printf("  %s\n", row.c_str());
     if (h.frame_buffer) {
-        const double ms = h.render_clocks_max / (r.harness.pll_mhz * 2.0) * 1e-3;
+        const double ms = h.render_clocks_max / h.design_mhz * 1e-3;
         std::printf("\nrendering into the frame buffer: longest frame %d clocks (%.1f ms, %.1f rendered frames/s), "
                     "write-queue overflow %s\n", h.render_clocks_max, ms, 1e3 / ms, h.late ? "SET" : "clear");
     } else {
@@ -93,8 +93,8 @@ void write_run(const RunReport& r) {
       << num(h.pll_mhz, 4) << ",\n  \"setup_config\": \"" << r.setup_config << "\",\n  \"sim_ms\": " << num(double(h.sim_ps) * 1e-9, 1) << ",\n  \"wall_s\": "
       << num(h.wall_s, 1) << ",\n  \"render_percent\": "
       << num(h.render_clocks_budget ? 100.0 * h.render_clocks_max / h.render_clocks_budget : 0.0, 1)
-      << ",\n  \"render_ms\": " << num(h.render_clocks_max / (h.pll_mhz * 2.0) * 1e-3, 2)
-      << ",\n  \"render_fps\": " << num(h.render_clocks_max ? h.pll_mhz * 2.0 * 1e6 / h.render_clocks_max : 0.0, 1)
+      << ",\n  \"render_ms\": " << num(h.render_clocks_max / h.design_mhz * 1e-3, 2)
+      << ",\n  \"render_fps\": " << num(h.render_clocks_max ? h.design_mhz * 1e6 / h.render_clocks_max : 0.0, 1)
       << ",\n  \"render_clocks_max\": " << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
       << h.render_clocks_budget << ",\n  \"late\": " << (h.late ? "true" : "false") << ",\n  \"tmds_bad\": "
       << h.tmds_bad << ",\n  \"tmds_max_disparity\": " << h.tmds_max_disparity << ",\n  \"failures\": [";

@@ -79,7 +79,8 @@ void icebreaker_models(std::vector<std::string>& out) {
 }
 
 bool run_icebreaker(const HarnessOptions& o, VideoCapture& cap, HarnessResult& r) {
-    r.pll_mhz = 12.0 * 67.0 / 16.0 / 2.0;   // icebreaker_prims.v: 50.25 MHz, a pixel every other clock
+    r.pll_mhz = 12.0 * 67.0 / 32.0;   // icebreaker_prims.v: 25.125 MHz, a pixel every clock
+    r.design_mhz = r.pll_mhz;
     r.frame_buffer = true;
     // Verilator registers a model's scopes in the thread's current context: set it around construction
     auto ctx = std::make_unique<VerilatedContext>();

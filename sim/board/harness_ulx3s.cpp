@@ -166,6 +166,7 @@ void ulx3s_models(std::vector<std::string>& out) {
 bool run_ulx3s(const HarnessOptions& o, VideoCapture& cap, HarnessResult& r) {
     // ulx3s_prims.v: 25 MHz x 5 / 1 / 20 x 4 = 25 MHz; 720p: 25 x 104 / 7 x 2 / 10 = 74.2857 MHz
     r.pll_mhz = (o.mode == "1280x720") ? 25.0 * 104.0 / 7.0 * 2.0 / 10.0 : 25.0;
+    r.design_mhz = (o.mode == "1280x720") ? r.pll_mhz : 2.0 * r.pll_mhz;   // 640 x 480: a pixel every other clock
     // 640x480 and the 128x96 test raster: the frame buffer design (board_core_fb); 1280x720 and 128x96-race:
     // racing the beam (board_core)
     r.frame_buffer = (o.mode == "640x480" || o.mode == "128x96");
