@@ -35,6 +35,7 @@ module board_core_fb #(
     parameter OBJ_FILE = "",
     parameter SHADE_FILE = "",
     parameter LIGHT_FILE = "",
+    parameter LIGHT_BRAM = 1,          // light_gen's TABLE_BRAM: its table in a block RAM, or in logic
     parameter COS_E = 12551,
     parameter COS_HALF_E = 15396,
     parameter MUL_STEPS = 1,
@@ -96,7 +97,7 @@ module board_core_fb #(
     wire light_busy;
     reg light_go;
     light_gen #(
-        .COS_E(COS_E), .COS_HALF_E(COS_HALF_E), .LIGHT_FILE(LIGHT_FILE)
+        .COS_E(COS_E), .COS_HALF_E(COS_HALF_E), .LIGHT_FILE(LIGHT_FILE), .TABLE_BRAM(LIGHT_BRAM)
     ) u_light (
         .clk(clk), .rst_n(rst_n), .start(light_go), .f(frame), .busy(light_busy),
         .l_x(l_x), .l_y(l_y), .l_z(l_z), .h_x(h_x), .h_y(h_y), .h_z(h_z)

@@ -9,6 +9,8 @@
 // word i (0..64) = round(16384 sin(pi i / 128) * SIN_E / 2^14), word 128 + i the same with SIN_HALF_E, rounded
 // half up as board_model's light_q (the other words are 0); cos t = sin(t + 64) and the sign of each quadrant
 // are applied here. The z components are COS_E and COS_HALF_E themselves.
+// TABLE_BRAM = 0 asks synthesis to build the table from logic instead (rom_style = "logic": the ULX3S, whose
+// frame buffer and shader take every block RAM of the ECP5-25F); the same words, read the same way.
 // Handshake: start (with f) is taken while busy = 0; busy stays 1 for 5 cycles; l_x, l_y, h_x, h_y take their
 // new values one after the other while busy = 1 (l_z and h_z are constants) and hold while busy = 0. The
 // callers do not read them while busy.
@@ -18,7 +20,8 @@
 module light_gen #(
     parameter COS_E = 12551,       // round(16384 cos 40 deg)
     parameter COS_HALF_E = 15396,
-    parameter LIGHT_FILE = ""
+    parameter LIGHT_FILE = "",
+    parameter TABLE_BRAM = 1
 ) (
     input  wire        clk,
     input  wire        rst_n,
@@ -28,8 +31,6 @@ module light_gen #(
     output reg  signed [15:0] l_x, l_y, l_z,
     output reg  signed [15:0] h_x, h_y, h_z
 );
-    reg [15:0] tab[0:255];
-    initial $readmemh(LIGHT_FILE, tab);
 
     // cos t = sin(t + 64); sin over four quadrants from the quarter wave
     reg [7:0] t;
@@ -39,8 +40,18 @@ module light_gen #(
     reg [2:0] step;                // 0..3: the read of l_x, l_y, h_x, h_y; 1..4: its word is written
     // the read of step s: cos t (s even) or sin t (s odd), SIN_E (s < 2) or SIN_HALF_E
     wire [7:0] addr = {step[1], step[0] ? i_s : i_c};
-    reg [15:0] word;               // the block RAM's read register
-    always @(posedge clk) word <= tab[addr];
+    reg [15:0] word;               // the table's read register
+    generate
+        if (TABLE_BRAM != 0) begin : g_bram
+            reg [15:0] tab[0:255];
+            initial $readmemh(LIGHT_FILE, tab);
+            always @(posedge clk) word <= tab[addr];
+        end else begin : g_logic
+            (* rom_style = "logic" *) reg [15:0] tab[0:255];
+            initial $readmemh(LIGHT_FILE, tab);
+            always @(posedge clk) word <= tab[addr];
+        end
+    endgenerate
     reg neg;                       // the word's sign, read beside it
     wire signed [15:0] res = neg ? -$signed(word) : $signed(word);
 

@@ -7,7 +7,8 @@
 //   MODE 0, 2: board_core_fb, the iCEBreaker's: spec_shader's small configuration (one span at a time, the
 //            size of an ECP5-25F) renders at half the size into a frame buffer in block RAM
 //            (frame_store_packed: 320 x 240 RGB444 in 50 of the 56 DP16KD) shown pixel-doubled; the colour's
-//            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame;
+//            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame; the light's
+//            table in logic (LIGHT_BRAM = 0: the buffer and the shader take every DP16KD);
 //   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by the pipelined
 //            spec_shader (a span every clock), which does not fit an ECP5-85F (simulation only).
 //
@@ -84,7 +85,7 @@ module ulx3s_top #(
                 .SPLIT_FILE(SPLIT_FILE), .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .LIGHT_FILE(LIGHT_FILE),
                 .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E), .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1),
                 .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
-                .STORE_PACKED(1), .FIFO_LUTRAM(1)
+                .STORE_PACKED(1), .FIFO_LUTRAM(1), .LIGHT_BRAM(0)
             ) u_core (
                 .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb4), .hsync(hs), .vsync(vs), .de(de),
                 .error(late), .frame(frame)
