@@ -296,6 +296,11 @@ def place(board, mode, device, synth_res, net, args, tools, out):
                 res["note"] = "packs into %d logic cells of %d, but nextpnr finds no legal placement" % lc
         return res
     r = json.load(open(os.path.join(ROOT, rep)))
+    if board == "icebreaker":   # the logic cells after packing (LUT4s + flip-flops and carries without a LUT)
+        with open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))) as f:
+            lc = synth.packed_lc(f.read())
+        if lc:
+            res["lc"] = lc[0]
     res["clocks"] = nextpnr_clocks(r)
     res["utilization"] = {k: v for k, v in r.get("utilization", {}).items() if v.get("used", 0)}
     if board == "icebreaker":

@@ -402,6 +402,9 @@ CALC = {
     "coverage_toggle_all": lambda f: 100.0 * f.data("coverage")["all"]["toggle"][0] /
     f.data("coverage")["all"]["toggle"][1],
     "coverage_drift": lambda f: coverage_drift(f.data("coverage")),
+    # the iCEBreaker's routed Fmax over its design clock, in % (docs/boards.md)
+    "icebreaker_slack_pct": lambda f: 100.0 * (f.data("bitstream_icebreaker")["designs"][0]["clocks"][0]["fmax_mhz"] /
+                                               f.data("bitstream_icebreaker")["designs"][0]["clocks"][0]["constraint_mhz"] - 1.0),
     "long_pixels": lambda f: sum(r["pixels"] for r in f.data("test_long")["runs"]),
     "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
     # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
