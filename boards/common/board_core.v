@@ -3,9 +3,9 @@
 // buffers. Out come registered colour, sync and data-enable signals at the pixel rate, for the board's
 // output stage (a DVI transmitter chip on the iCEBreaker's Pmod, TMDS encoders on the ULX3S).
 //
-// One clock domain. pix_ce marks the pixel clock's cycles: tie it high when clk is the pixel clock, or give
-// it every other cycle when clk runs at twice the pixel rate (the iCEBreaker: the renderer gets two clocks
-// per pixel). Per line (H_TOTAL pixels): at the line's first pixel the renderer starts on the next line
+// One clock domain. pix_ce marks the pixel clock's cycles: tie it high when clk is the pixel clock (the ULX3S
+// at 1280 x 720), or give it every other cycle when clk runs at twice the pixel rate (the renderer gets two
+// clocks per pixel). Per line (H_TOTAL pixels): at the line's first pixel the renderer starts on the next line
 // (v + 1, or line 0 during the last blanking line), into one bank; at the line's last pixel the banks swap,
 // so that the scanout reads the freshly rendered line from the next line's first pixel on. Per frame: at the first blanking line the frame number f advances and light_gen
 // computes the frame's light (L, H), used from line 0 on.

@@ -5,8 +5,10 @@
 // as board_core, except that the colour is made after the write queue by compose_seq (one channel at a time, no
 // multiplier: the UP5K's DSPs are the shader's); the light moves with every *rendered* frame.
 //
-// One clock domain, pix_ce every other cycle (the scanout reads a group of 4 buffer pixels, 3 words, in 16
-// clocks). Rendering frame r: light_gen computes frame r's light; at the start of the next displayed frame the
+// One clock domain; pix_ce marks the pixel clock's cycles: every cycle (the iCEBreaker: clk is the pixel
+// clock) or every other cycle (the ULX3S at 640 x 480: clk at twice the pixel rate). The scanout shows a group
+// of 4 buffer pixels (3 words) for 8 pixels: 8 or 16 clocks, against a fetch's 5 (frame_store) or 5
+// (frame_store_packed) clocks. Rendering frame r: light_gen computes frame r's light; at the start of the next displayed frame the
 // renderer starts at buffer line 0 and, while that displayed frame is still being scanned, rewrites buffer
 // line y only after the beam has shown it (display line 2y + 1): that displayed frame shows frame r - 1
 // whole. Each line is cleared to the background first (one command), then its sub-spans' pixels are written.
@@ -339,6 +341,15 @@ module board_core_fb #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, fetch_busy, group_valid, px_x[X_W-1:T_W]};
+    assign unused = &{1'b0, group_valid, px_x[X_W-1:T_W]};
+`ifndef SYNTHESIS
+    // the scanout's fetches are far enough apart that the store has always finished the last one
+    always @(posedge clk) begin
+        if (rst_n && fetch && fetch_busy) begin
+            $display("board_core_fb: a fetch while the frame store is still busy with the last (%m): an RTL bug");
+            $fatal(1);
+        end
+    end
+`endif
 endmodule
 `default_nettype wire

@@ -5,10 +5,10 @@
 //
 // with t = 2 pi f / 256 and V = (0, 0, 1) the viewer at infinity (screen x right, y down, z toward the
 // viewer). Components are signed Q1.14 (16384 = 1.0). The x and y components are read from a table of the
-// products over a quarter wave (LIGHT_FILE, 256 words of 16 bits, one block RAM; boardsim gen writes it):
-// word i (0..64) = round(16384 sin(pi i / 128) * SIN_E / 2^14), word 128 + i the same with SIN_HALF_E, rounded
-// half up as board_model's light_q (the other words are 0); cos t = sin(t + 64) and the sign of each quadrant
-// are applied here. The z components are COS_E and COS_HALF_E themselves.
+// products over a quarter wave (LIGHT_FILE, 256 words of 16 bits; boardsim gen writes it): word i (0..64) =
+// round(s_i sin E), word 128 + i = round(s_i sin(E/2)), with s_i = round(16384 sin(pi i / 128)) and sin E,
+// sin(E/2) in Q1.14, each product rounded half up (/ 2^14) as board_model's light_q rounds it; the other words
+// are 0, and no word exceeds 16384. cos t = sin(t + 64) and the sign of each quadrant are applied here. The z components are COS_E and COS_HALF_E themselves.
 // TABLE_BRAM = 0 asks synthesis to build the table from logic instead (rom_style = "logic": the ULX3S, whose
 // frame buffer and shader take every block RAM of the ECP5-25F); the same words, read the same way.
 // Handshake: start (with f) is taken while busy = 0; busy stays 1 for 5 cycles; l_x, l_y, h_x, h_y take their
@@ -38,7 +38,7 @@ module light_gen #(
     wire [6:0] i_s = t[6] ? 7'd64 - {1'b0, t[5:0]} : {1'b0, t[5:0]};
     wire [6:0] i_c = tc[6] ? 7'd64 - {1'b0, tc[5:0]} : {1'b0, tc[5:0]};
     reg [2:0] step;                // 0..3: the read of l_x, l_y, h_x, h_y; 1..4: its word is written
-    // the read of step s: cos t (s even) or sin t (s odd), SIN_E (s < 2) or SIN_HALF_E
+    // the read of step s: cos t (s even) or sin t (s odd), times sin E (s < 2) or sin(E/2)
     wire [7:0] addr = {step[1], step[0] ? i_s : i_c};
     reg [15:0] word;               // the table's read register
     generate

@@ -102,7 +102,7 @@ module sphere_spans #(
     reg [R_W-1:0] s_q;
     reg s_zero;                        // s = 0: the chord has no pixel
 
-    // at most one carry chain between registers in each state (the iCE40 runs this at 50 MHz)
+    // at most one carry chain between registers in each state (for the iCE40's clock)
     localparam A_IDLE = 4'd0, A_OBJ = 4'd1, A_DY = 4'd2, A_ABS = 4'd3, A_CMP = 4'd4, A_DY2 = 4'd5, A_S = 4'd6,
                A_X0 = 4'd7, A_P = 4'd8, A_P2 = 4'd9, A_P3 = 4'd10, A_HAND = 4'd11, A_MISS = 4'd12;
     reg miss;                          // the line misses the sphere: |DY| >= R2

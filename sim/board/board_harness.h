@@ -40,6 +40,9 @@ struct HarnessResult {
     uint64_t tmds_chars = 0, tmds_bad = 0;
     int tmds_max_disparity = 0;
     uint64_t nibbles_unequal = 0;     // ulx3s frame buffer modes: 8-bit channels that are not 4 bits x 17
+    // icebreaker: the least time from a change of the Pmod's data pins to the next rising edge of its pixel
+    // clock pin (set-up) and from such an edge to the next change (hold), ps; -1 where not measured
+    double pin_setup_ps = -1, pin_hold_ps = -1;
 };
 
 // The boards and modes this build has models for ("icebreaker 128x96", ...).

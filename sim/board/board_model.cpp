@@ -69,8 +69,9 @@ uint32_t light_product(uint32_t mag, int32_t k) {
 }  // namespace
 
 std::vector<uint32_t> light_table(const Quant& q) {
+    if (q.quarter_sin.size() != 65) throw std::logic_error("light_table: the quarter wave must have 65 words");
     std::vector<uint32_t> t(256, 0u);
-    for (size_t i = 0; i < q.quarter_sin.size() && i < 128; ++i) {
+    for (size_t i = 0; i < q.quarter_sin.size(); ++i) {
         t[i] = light_product(q.quarter_sin[i], q.sin_e);
         t[128 + i] = light_product(q.quarter_sin[i], q.sin_half_e);
     }

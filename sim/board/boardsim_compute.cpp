@@ -80,6 +80,13 @@ RunReport run_board_sim(const RunOptions& o) {
         fb ? 0 : scene.mode.h_total() * ((o.board == "ulx3s" && o.mode == "1280x720") ? 1 : 2);
     if (!rep.harness.finished) rep.failures.push_back("the frames were not shown within the time limit");
     if (rep.harness.late) rep.failures.push_back("a line was not rendered in time (late flag)");
+    // the DVI Pmod samples its data pins at the rising edge of its pixel clock pin: they must be stable a
+    // quarter pixel before and after it (the design gives half a pixel each way)
+    if (rep.harness.pin_setup_ps >= 0 || rep.harness.pin_hold_ps >= 0) {
+        const double quarter_ps = 0.25e6 / rep.harness.pll_mhz;
+        if (rep.harness.pin_setup_ps < quarter_ps || rep.harness.pin_hold_ps < quarter_ps)
+            rep.failures.push_back("the Pmod's data pins change within a quarter pixel of its pixel clock's rising edge");
+    }
     if (rep.harness.out_of_step) rep.failures.push_back("the TMDS serializer lost step with the pixel clock");
     if (rep.harness.tmds_bad) rep.failures.push_back("TMDS characters that do not decode or do not belong");
     if (rep.harness.nibbles_unequal) rep.failures.push_back("8-bit channels that are not a 4-bit value x 17");

@@ -42,6 +42,9 @@ void print_run(const RunReport& r) {
         const double ms = h.render_clocks_max / h.design_mhz * 1e-3;
         std::printf("\nrendering into the frame buffer: longest frame %d clocks (%.1f ms, %.1f rendered frames/s), "
                     "write-queue overflow %s\n", h.render_clocks_max, ms, 1e3 / ms, h.late ? "SET" : "clear");
+        if (h.pin_setup_ps >= 0 && h.pin_hold_ps >= 0)
+            std::printf("DVI Pmod pins: data stable at least %.2f ns before and %.2f ns after each rise of the pixel "
+                        "clock pin\n", h.pin_setup_ps * 1e-3, h.pin_hold_ps * 1e-3);
     } else {
         std::printf("\nrendering: longest line %d of %d clocks (%.0f %%), late flag %s\n", h.render_clocks_max,
                     h.render_clocks_budget, 100.0 * h.render_clocks_max / std::max(1, h.render_clocks_budget),
@@ -97,7 +100,10 @@ void write_run(const RunReport& r) {
       << ",\n  \"render_fps\": " << num(h.render_clocks_max ? h.design_mhz * 1e6 / h.render_clocks_max : 0.0, 1)
       << ",\n  \"render_clocks_max\": " << h.render_clocks_max << ",\n  \"render_clocks_budget\": "
       << h.render_clocks_budget << ",\n  \"late\": " << (h.late ? "true" : "false") << ",\n  \"tmds_bad\": "
-      << h.tmds_bad << ",\n  \"tmds_max_disparity\": " << h.tmds_max_disparity << ",\n  \"failures\": [";
+      << h.tmds_bad << ",\n  \"tmds_max_disparity\": " << h.tmds_max_disparity;
+    if (h.pin_setup_ps >= 0) o << ",\n  \"pin_setup_ns\": " << num(h.pin_setup_ps * 1e-3, 2);
+    if (h.pin_hold_ps >= 0) o << ",\n  \"pin_hold_ns\": " << num(h.pin_hold_ps * 1e-3, 2);
+    o << ",\n  \"failures\": [";
     for (size_t i = 0; i < r.failures.size(); ++i) o << (i ? ", " : "") << "\"" << r.failures[i] << "\"";
     o << "]\n}\n";
     const std::string path = base + "_summary.json";

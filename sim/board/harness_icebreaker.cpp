@@ -30,6 +30,14 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
     int toggles = 0, stop_changes = -1;
     bool led_prev = !top.LEDG_N;
     uint64_t stop_at = 0;
+    // the data pins' last change and the last sampling edge (set-up and hold at the pins)
+    auto pins = [&] {
+        return (uint32_t(top.dvi_r) << 11) | (uint32_t(top.dvi_g) << 7) | (uint32_t(top.dvi_b) << 3) |
+               (uint32_t(top.dvi_hs) << 2) | (uint32_t(top.dvi_vs) << 1) | uint32_t(top.dvi_de);
+    };
+    uint32_t pins_prev = pins();
+    uint64_t t_change = 0, t_sample = 0;
+    bool changed = false, sampled = false;
     while (ctx.time() < o.limit_ps) {
         const uint64_t tn = ((k + 1) * 1000000ull) / 24ull;
         uint64_t t = tn;
@@ -41,7 +49,17 @@ void run(V& top, VerilatedContext& ctx, const HarnessOptions& o, VideoCapture& c
         }
         top.eval();
         ++r.time_slots;
+        const uint32_t p = pins();
+        if (p != pins_prev) {
+            if (sampled && (r.pin_hold_ps < 0 || double(t - t_sample) < r.pin_hold_ps)) r.pin_hold_ps = double(t - t_sample);
+            t_change = t;
+            changed = true;
+            pins_prev = p;
+        }
         if (top.dvi_clk && !clk_prev) {
+            if (changed && (r.pin_setup_ps < 0 || double(t - t_change) < r.pin_setup_ps)) r.pin_setup_ps = double(t - t_change);
+            t_sample = t;
+            sampled = true;
             PixelSample s;
             s.t_ps = t;
             s.rgb[0] = top.dvi_r;

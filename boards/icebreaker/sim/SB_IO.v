@@ -2,7 +2,8 @@
 // uses: 0101_01 (registered output: D_OUT_0 loaded at the rising OUTPUT_CLK edge when CLOCK_ENABLE = 1),
 // 0100_01 (DDR output: D_OUT_0 loaded at the rising edge, D_OUT_1 at the falling edge; the pad shows the
 // rising edge's register while OUTPUT_CLK is high, the falling edge's while it is low) and 0110_01 (simple
-// output: the pad follows D_OUT_0). Other values stop the simulation.
+// output: the pad follows D_OUT_0). Other values stop the simulation. CLOCK_ENABLE gates both registers
+// directly (the design ties it to 1; the vendor's model latches it at the rising edge for the falling one).
 `timescale 1ns / 1ps
 `default_nettype none
 module SB_IO #(
