@@ -7,15 +7,19 @@
               yowasp-ecppack: 640 x 480 (the frame buffer design) by default; --modes 1280x720 tries the
               racing design, whose pipelined setup does not fit (no place and route then)
 
+Every placement seed (--seeds, default 1-3) is placed and routed; the worst (the lowest Fmax over its constraint on
+any clock) is reported and its placement is written as the bitstream, so the figures are the bitstream's own and
+timing_met holds for every seed.
+
 Writes build/board/<board>/: the bitstream(s), the logs, nextpnr's reports and summary.json
-({board, design: [{mode, bitstream, lut, ff, bram, dsp, clocks: [{net, constraint_mhz, fmax_mhz, met}],
-timing_met, ...}]}), and prints a table. Exit 0 when every bitstream was written with timing met, 1 when
+({board, seeds, designs: [{mode, bitstream, seed, lut, ff, bram, dsp, clocks: [{net, constraint_mhz, fmax_mhz, met}],
+fmax_seeds: {net: [Fmax per seed]}, timing_met, ...}]}), and prints a table. Exit 0 when every bitstream was written with timing met, 1 when
 timing fails, 2 for bad input or a missing tool.
 
 With --breakdown, a second synthesis keeps the hierarchy and each design's "breakdown" gives the cells of the
 shader's parts and of each board module (their subtrees), to show where a design that does not fit spends them.
 
-Usage: boards/flow.py --board icebreaker|ulx3s [--modes 640x480,1280x720] [--seed N] [--specrom build/specrom]
+Usage: boards/flow.py --board icebreaker|ulx3s [--modes 640x480,1280x720] [--seeds 1-3] [--specrom build/specrom]
                       [--setuprom build/setuprom]
                       [--breakdown]
 """
@@ -267,56 +271,70 @@ def place(board, mode, device, synth_res, net, args, tools, out):
         over = ["%s %d of %d" % (k, res[k], v) for k, v in lim.items() if res[k] > v]
         res["note"] = "does not fit: " + ", ".join(over)
         return res
-    rep = "%s/%s.pnr.json" % (rel, name)
-    if board == "icebreaker":
-        asc = "%s/%s.asc" % (rel, name)
-        cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--pcf", "boards/icebreaker/icebreaker.pcf",
-                                        "--json", net, "--asc", asc]
-    else:
-        cfg = "%s/%s.config" % (rel, name)
-        cmd = tools["nextpnr-ecp5"] + ["--" + device, "--speed", "6", "--package", "CABGA381",
-                                       "--lpf", "boards/ulx3s/ulx3s.lpf", "--json", net, "--textcfg", cfg]
-    cmd += ["--report", rep, "--seed", str(args.seed), "--timing-allow-fail", "--freq", str(d["freq_mhz"][mode])]
-    rc, res["pnr_s"] = run(cmd, "%s/%s.nextpnr.log" % (rel, name))
-    if rc != 0 or not os.path.exists(os.path.join(ROOT, rep)):
-        res["note"] = "nextpnr failed (%s/%s.nextpnr.log)" % (rel, name)
-        # packing can need more logic cells than LUT4s: a flip-flop whose input is not a LUT's output takes a
-        # cell of its own (the count is in the log, before placement fails)
-        with open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))) as f:
-            log = f.read()
-        lc = synth.packed_lc(log)
-        if lc:
-            res["lc"] = lc[0]
-            if lc[0] > lc[1]:
-                res["fits"] = False
-                res["note"] = "does not fit after packing: %d logic cells of %d (nextpnr)" % lc
-            elif "Unable to find legal placement" in log:
-                # packed within the device, but the placer found no legal place for every cell
-                res["fits"] = False
-                res["note"] = "packs into %d logic cells of %d, but nextpnr finds no legal placement" % lc
-        return res
-    r = json.load(open(os.path.join(ROOT, rep)))
+    # every seed places and routes; the worst (the lowest Fmax over its constraint, on any clock) is reported,
+    # and its placement is the bitstream, so the figures are the bitstream's own
+    runs = []
+    for seed in args.seeds:
+        sname = "%s_s%d" % (name, seed)
+        rep = "%s/%s.pnr.json" % (rel, sname)
+        if board == "icebreaker":
+            place_out = "%s/%s.asc" % (rel, sname)
+            cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--pcf", "boards/icebreaker/icebreaker.pcf",
+                                            "--json", net, "--asc", place_out]
+        else:
+            place_out = "%s/%s.config" % (rel, sname)
+            cmd = tools["nextpnr-ecp5"] + ["--" + device, "--speed", "6", "--package", "CABGA381",
+                                           "--lpf", "boards/ulx3s/ulx3s.lpf", "--json", net, "--textcfg", place_out]
+        cmd += ["--report", rep, "--seed", str(seed), "--timing-allow-fail", "--freq", str(d["freq_mhz"][mode])]
+        log = "%s/%s.nextpnr.log" % (rel, sname)
+        print("flow:   seed %d ..." % seed, flush=True)
+        rc, secs = run(cmd, log)
+        res["pnr_s"] = round(res.get("pnr_s", 0) + secs, 1)
+        with open(os.path.join(ROOT, log)) as f:
+            log_text = f.read()
+        if rc != 0 or not os.path.exists(os.path.join(ROOT, rep)):
+            res["note"] = "nextpnr failed (%s)" % log
+            # packing can need more logic cells than LUT4s: a flip-flop whose input is not a LUT's output takes a
+            # cell of its own (the count is in the log, before placement fails)
+            lc = synth.packed_lc(log_text)
+            if lc:
+                res["lc"] = lc[0]
+                if lc[0] > lc[1]:
+                    res["fits"] = False
+                    res["note"] = "does not fit after packing: %d logic cells of %d (nextpnr)" % lc
+                elif "Unable to find legal placement" in log_text:
+                    # packed within the device, but the placer found no legal place for every cell
+                    res["fits"] = False
+                    res["note"] = "packs into %d logic cells of %d, but nextpnr finds no legal placement" % lc
+            return res
+        clocks = nextpnr_clocks(json.load(open(os.path.join(ROOT, rep))))
+        worst = min((c["fmax_mhz"] / c["constraint_mhz"] for c in clocks if c["constraint_mhz"]), default=0.0)
+        runs.append({"seed": seed, "clocks": clocks, "worst": worst, "rep": rep, "place": place_out, "log": log_text})
+    w = min(runs, key=lambda r: r["worst"])
+    res["seed"] = w["seed"]
+    res["clocks"] = w["clocks"]
+    res["fmax_seeds"] = {c["net"]: [next((x["fmax_mhz"] for x in r["clocks"] if x["net"] == c["net"]), None)
+                                    for r in runs] for c in w["clocks"]}
     if board == "icebreaker":   # the logic cells after packing (LUT4s + flip-flops and carries without a LUT)
-        with open(os.path.join(ROOT, "%s/%s.nextpnr.log" % (rel, name))) as f:
-            lc = synth.packed_lc(f.read())
+        lc = synth.packed_lc(w["log"])
         if lc:
             res["lc"] = lc[0]
-    res["clocks"] = nextpnr_clocks(r)
+    r = json.load(open(os.path.join(ROOT, w["rep"])))
     res["utilization"] = {k: v for k, v in r.get("utilization", {}).items() if v.get("used", 0)}
     if board == "icebreaker":
         bit = "%s/%s.bin" % (rel, name)
-        rc, _ = run(tools["icepack"] + [asc, bit], "%s/%s.icepack.log" % (rel, name))
+        rc, _ = run(tools["icepack"] + [w["place"], bit], "%s/%s.icepack.log" % (rel, name))
         if shutil.which("icetime"):
             tlog = "%s/%s.icetime.log" % (rel, name)
-            run(["icetime", "-d", "up5k", "-P", "sg48", "-p", "boards/icebreaker/icebreaker.pcf", "-t", asc], tlog)
+            run(["icetime", "-d", "up5k", "-P", "sg48", "-p", "boards/icebreaker/icebreaker.pcf", "-t", w["place"]], tlog)
             m = re.search(r"Total path delay: ([0-9.]+) ns \(([0-9.]+) MHz\)", open(os.path.join(ROOT, tlog)).read())
             res["icetime_mhz"] = float(m.group(2)) if m else None
     else:
         bit = "%s/%s.bit" % (rel, name)
-        rc, _ = run(tools["ecppack"] + [cfg, bit], "%s/%s.ecppack.log" % (rel, name))
+        rc, _ = run(tools["ecppack"] + [w["place"], bit], "%s/%s.ecppack.log" % (rel, name))
     if rc == 0 and os.path.exists(os.path.join(ROOT, bit)):
         res["bitstream"] = bit
-    res["timing_met"] = bool(res["clocks"]) and all(c["met"] for c in res["clocks"])
+    res["timing_met"] = all(bool(r["clocks"]) and all(c["met"] for c in r["clocks"]) for r in runs)
     return res
 
 
@@ -324,12 +342,23 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--board", required=True)
     ap.add_argument("--modes", default="")
-    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--seeds", default="1-3", help="placement seeds: N, N-M or a comma list (default 1-3); the "
+                    "worst is reported and written as the bitstream")
     ap.add_argument("--specrom", default=os.path.join(ROOT, "build", "specrom"))
     ap.add_argument("--setuprom", default=os.path.join(ROOT, "build", "setuprom"))
     ap.add_argument("--breakdown", action="store_true",
                     help="also synthesize with the hierarchy kept and record each block's cells (breakdown)")
     args = ap.parse_args()
+    try:
+        if "-" in args.seeds:
+            lo, hi = (int(x) for x in args.seeds.split("-", 1))
+            args.seeds = list(range(lo, hi + 1))
+        else:
+            args.seeds = [int(x) for x in args.seeds.split(",")]
+    except ValueError:
+        fail("--seeds must be N, N-M or a comma list, not '%s'" % args.seeds)
+    if not args.seeds or any(x < 0 for x in args.seeds):
+        fail("--seeds must name at least one seed >= 0")
     if args.board not in BOARDS:
         fail("--board must be icebreaker or ulx3s, not '%s'" % args.board)
     modes = args.modes.split(",") if args.modes else BOARDS[args.board]["default_modes"]
@@ -358,10 +387,11 @@ def main():
         for dev in BOARDS[args.board]["devices"]:
             print("flow: %s %s: place and route on %s ..." % (args.board, m, dev), flush=True)
             results.append(place(args.board, m, dev, sres, net, args, tools, out))
-    summary = {"board": args.board, "seed": args.seed, "designs": results}
+    summary = {"board": args.board, "seeds": args.seeds, "designs": results}
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=2)
-    print("\n| board | mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |")
+    print("\n| board | mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz), worst of seeds %s "
+          "| met |" % ",".join(str(x) for x in args.seeds))
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in results:
         lead = "| %s | %s | %s | %d | %d | %d | %d |" % (args.board, r["mode"], r["device"], r["lut"], r["ff"],

@@ -723,17 +723,24 @@ def block_board_split(f):
 def block_board_bitstream(board):
     def make(f):
         d = f.data("bitstream_" + board)
-        out = ["| mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz) | met |",
-               "|" + "---|" * 10]
+        out = ["| mode | device | LUT | FF | BRAM | DSP | clock | constraint (MHz) | Fmax (MHz), the bitstream's seed "
+               "(the worst) | Fmax, seeds %s | met (every seed) |" % ", ".join(str(x) for x in d.get("seeds", [])),
+               "|" + "---|" * 11]
         for r in d["designs"]:
             for i, c in enumerate(r["clocks"]):
                 lead = ("| %s | %s | %d | %d | %d | %d |" % (r["mode"], r.get("device", ""), r["lut"], r["ff"], r["bram"],
                                                             r["dsp"]) if i == 0 else "| | | | | | |")
-                out.append("%s %s | %.2f | %.2f | %s |" % (lead, c["net"].replace("$glbnet$", ""), c["constraint_mhz"],
-                                                         c["fmax_mhz"], "yes" if c["met"] else "no"))
+                seeds = ", ".join("%.2f" % x for x in r.get("fmax_seeds", {}).get(c["net"], []) if x is not None)
+                met = all(x is not None and x >= c["constraint_mhz"]
+                          for x in r.get("fmax_seeds", {}).get(c["net"], [c["fmax_mhz"]]))
+                out.append("%s %s | %.2f | %.2f (seed %s) | %s | %s |" % (lead, c["net"].replace("$glbnet$", ""),
+                                                                        c["constraint_mhz"], c["fmax_mhz"],
+                                                                        r.get("seed", "-"), seeds,
+                                                                        "yes" if met else "no"))
             if not r["clocks"]:
-                out.append("| %s | %s | %d | %d | %d | %d | %s | | | no |" % (r["mode"], r.get("device", ""), r["lut"],
-                                                                             r["ff"], r["bram"], r["dsp"], r.get("note", "")))
+                out.append("| %s | %s | %d | %d | %d | %d | %s | | | | no |" % (r["mode"], r.get("device", ""), r["lut"],
+                                                                               r["ff"], r["bram"], r["dsp"],
+                                                                               r.get("note", "")))
         return "\n".join(out)
     return make
 
