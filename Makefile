@@ -325,7 +325,7 @@ fuzz: deps deps-fuzz
 #   make board-sim BOARD=icebreaker|ulx3s [MODE=640x480|1280x720] [FRAMES=2]
 #                     the board's Verilated top for whole frames: PNGs, model and double-precision comparison,
 #                     video timing (build/board-sim/)
-#   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow: build/board/<board>/ (bitstreams, summary.json)
+#   make bitstream BOARD=icebreaker|ulx3s   the open FPGA flow, placement seeds 1-3, the worst kept: build/board/<board>/ (bitstreams, summary.json)
 #   make flash BOARD=icebreaker|ulx3s [MODE=...] [DEVICE=25k]   program the board (iceprog / openFPGALoader)
 #   make board-split    the error against split points per chord (docs/data/board_split_*.json)
 #   make board-tables   regenerate boards/common/gen/ (checked by the ctest board_tables_match_generator)
