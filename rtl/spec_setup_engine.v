@@ -270,7 +270,10 @@ module spec_setup_engine #(
         v_in <= run_halve ? v_half : $signed(v_rd);
         v_rnd <= run_halve & v_rd[0];
     end
-    wire signed [W+9:0] rho2k = $signed(la) * `SETUP_OPP_K;   // the opposite test, rho2 * OPP_K
+    // the opposite test, rho2 * OPP_K, a free-running register (the DSP's output register): read at ST_WR's
+    // phase 2, two clocks after the pair's last sum
+    reg signed [W+9:0] rho2k;
+    always @(posedge clk) rho2k <= $signed(la) * `SETUP_OPP_K;
     // the pair's operands (shifter stages, free-running), the angle lane's operand (set at rph 0) and the third
     // coordinate's gain term (or 0) with its carry in (set at rph 1)
     reg signed [W-1:0] op_a, op_b, op_t;
@@ -301,6 +304,19 @@ module spec_setup_engine #(
             end
         end
     endgenerate
+
+    // the pair's registers: a synchronous clear (ST_RD's first clock, a turn's second) and the sums (ST_RD's
+    // phases 5 and 6, a micro-rotation's or turn's third clock), nothing else, so the clear maps to the flip-flops'
+    // reset and the adders' sums go straight into them
+    wire pair_clr = !rst && ((st == ST_RD && ph == 4'd0) || (st == ST_ROT && rph == 2'd1 && qt != 2'd0));
+    wire la_add = !rst && ((st == ST_RD && ph == 4'd5) || (st == ST_ROT && rph == 2'd2));
+    wire lb_add = !rst && ((st == ST_RD && ph == 4'd6) || (st == ST_ROT && rph == 2'd2));
+    always @(posedge clk) begin
+        if (pair_clr) la <= {W{1'b0}};
+        else if (la_add) la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
+        if (pair_clr) lb <= {W{1'b0}};
+        else if (lb_add) lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
+    end
 
     always @(posedge clk) begin
         v_we <= 1'b0;
@@ -390,8 +406,6 @@ module spec_setup_engine #(
                         4'd0: begin
                             v_ra <= {run_vec, ca};
                             it <= 5'd0;
-                            la <= {W{1'b0}};
-                            lb <= {W{1'b0}};
                             lz <= {ZW{1'b0}};
                             op_xa <= 1'b0;
                             op_xb <= 1'b0;
@@ -411,7 +425,6 @@ module spec_setup_engine #(
                             ci_lb <= v_rnd;
                         end
                         4'd5: begin
-                            la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
                             // the first gain term (shift -1: t * 2) through the gain adder (at phase 6)
                             lts <= v_rd;
                             acc <= {W{1'b0}};
@@ -419,7 +432,6 @@ module spec_setup_engine #(
                             op_tc <= tc_first[1] & tc_first[0];
                         end
                         4'd6: begin
-                            lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
                             acc <= acc + op_t + {{(W - 1) {1'b0}}, op_tc};
                         end
                         default: begin
@@ -456,17 +468,12 @@ module spec_setup_engine #(
                             op_d <= d_now;
                         end
                     end else if (rph == 2'd1) begin
-                        if (qt != 2'd0) begin
-                            la <= {W{1'b0}};
-                            lb <= {W{1'b0}};
-                        end else begin
+                        if (qt == 2'd0) begin
                             // the third coordinate's gain term (tc_rot: the term of this micro-rotation's it)
                             op_t <= tc_rot[1] ? (lts ^ {W{tc_rot[0]}}) : {W{1'b0}};
                             op_tc <= tc_rot[1] & tc_rot[0];
                         end
                     end else begin
-                        la <= la + op_b + {{(W - 1) {1'b0}}, ci_la};
-                        lb <= lb + op_a + {{(W - 1) {1'b0}}, ci_lb};
                         {lz_cy, lz[ZL-1:0]} <= {1'b0, lz[ZL-1:0]} + {1'b0, op_z[ZL-1:0]} + {{ZL{1'b0}}, op_zc};
                         lz_hi <= 1'b1;
                         if (qt != 2'd0) begin
