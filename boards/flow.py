@@ -350,15 +350,9 @@ def main():
                     help="also synthesize with the hierarchy kept and record each block's cells (breakdown)")
     args = ap.parse_args()
     try:
-        if "-" in args.seeds:
-            lo, hi = (int(x) for x in args.seeds.split("-", 1))
-            args.seeds = list(range(lo, hi + 1))
-        else:
-            args.seeds = [int(x) for x in args.seeds.split(",")]
-    except ValueError:
-        fail("--seeds must be N, N-M or a comma list, not '%s'" % args.seeds)
-    if not args.seeds or any(x < 0 for x in args.seeds):
-        fail("--seeds must name at least one seed >= 0")
+        args.seeds = synth.parse_seeds(args.seeds)   # the same rules as make synth's
+    except ValueError as e:
+        fail(str(e))
     if args.board not in BOARDS:
         fail("--board must be icebreaker or ulx3s, not '%s'" % args.board)
     modes = args.modes.split(",") if args.modes else BOARDS[args.board]["default_modes"]

@@ -348,15 +348,17 @@ def one(target, top, config, lanes, args, tools):
 
 
 def parse_seeds(text):
+    """Placement seeds from N, N-M or a comma list of them (1..1000); ValueError names what is wrong
+    (also boards/flow.py's --seeds)."""
     seeds = []
     for part in text.split(","):
         a, _, b = part.partition("-")
         try:
             lo, hi = int(a), int(b or a)
         except ValueError:
-            fail("--seeds: '%s' is not N, N-M or a list of them" % text)
+            raise ValueError("--seeds: '%s' is not N, N-M or a list of them" % text)
         if lo < 1 or hi < lo or hi > 1000:
-            fail("--seeds: '%s' out of range" % part)
+            raise ValueError("--seeds: '%s' out of range" % part)
         seeds.extend(range(lo, hi + 1))
     return seeds
 
@@ -406,7 +408,10 @@ def main():
     ap.add_argument("--collect", action="store_true",
                     help="no new run: gather the results earlier runs wrote in --out (e.g. after one was stopped)")
     args = ap.parse_args()
-    args.seeds = parse_seeds(args.seeds)
+    try:
+        args.seeds = parse_seeds(args.seeds)
+    except ValueError as e:
+        fail(str(e))
     if args.shader:
         if args.runs:
             fail("--shader picks its runs with --targets and --shader-configs, not --runs")

@@ -69,7 +69,7 @@ RunReport run_board_sim(const RunOptions& o) {
     if (fb) {
         uint64_t spans = 0;
         for (int y = 0; y < fb_scene.mode.v_active; ++y) spans += line_spans(fb_scene, y).size();
-        const double design_mhz = (o.board == "icebreaker") ? scene.mode.pixel_mhz * 0.9 : 2.0 * scene.mode.pixel_mhz * 0.9;
+        const double design_mhz = (o.board == "icebreaker" ? 1.0 : 2.0) * scene.mode.pixel_mhz * 0.9;
         const double render_ps = double(spans) * 2.0 * 1000.0 / (design_mhz * 1e6) * 1e12;
         ho.limit_ps += uint64_t((o.frames + 1) * (render_ps + 2 * frame_ps) * 1.5);
     }
