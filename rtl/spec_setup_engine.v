@@ -258,6 +258,16 @@ module spec_setup_engine #(
 
     // ---- control ----------------------------------------------------------------------------------------------------
     reg [3:0] ph;                         // phase within a state
+    // vec_in takes the beat in every idle clock (so it holds the accepted one when the load starts) and shifts
+    // to the next component at phase 4 of an input vector's first load clock and after its x and y (three shifts
+    // a vector); the shift's enable is a register loaded a clock ahead, so vec_in's 192 enables see two
+    // registers and the state's decode only (nothing reads vec_in outside the load)
+    reg vin_sh;
+    always @(posedge clk) begin
+        vin_sh <= !rst && st == ST_LOAD && ld_v < 3'd4 && ((ld_c == 2'd0 && (ph == 4'd3 || ph == 4'd4)) || ld_c == 2'd1);
+        if (st == ST_IDLE) vec_in <= s_vec;
+        else if (vin_sh) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
+    end
     reg be_start;                         // the back end starts (one clock)
     wire be_done;
     // a coordinate rounded to half, (v + 1) >>> 1 = (v >>> 1) + v[0]: the shift here, the bit (v_rnd) is the
@@ -332,7 +342,6 @@ module spec_setup_engine #(
                     s_tready <= 1'b1;
                     if (s_tvalid && s_tready) begin
                         s_tready <= 1'b0;
-                        vec_in <= s_vec;
                         run_fields <= RUNS[6:0];   // run 0 (not halving) while the load reads P's words by v_in
                         s_reg <= s_str;
                         n_reg <= s_n;
@@ -372,15 +381,12 @@ module spec_setup_engine #(
                         end
                         if (ph == 4'd4) begin
                             ph <= 4'd0;
-                            if (ld_v < 3'd4) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
                             ld_c <= 2'd1;
                         end
                     end else begin
                         v_we <= 1'b1;
                         v_wa <= {ld_v, ld_c - 2'd1};
                         v_wd <= (ld_v == 3'd5) ? ((ld_c == 2'd3) ? U : {W{1'b0}}) : ld_wq;
-                        // the next component (three shifts a vector: at phase 4 and here for x and y)
-                        if (ld_v < 3'd4 && ld_c != 2'd3) vec_in <= {{VEC_W{1'b0}}, vec_in[12*VEC_W-1:VEC_W]};
                         if (ld_c == 2'd3) begin
                             ld_c <= 2'd0;
                             ld_v <= ld_v + 3'd1;
