@@ -199,6 +199,9 @@ def breakdown_totals(b, cells_limit):
 def nextpnr_clocks(report):
     out = []
     for net, v in sorted(report.get("fmax", {}).items()):
+        # nextpnr-ecp5 names a clock by the global net it promotes it to ($glbnet$NAME) in some runs, by NAME
+        # in others: the design's own name either way
+        net = net[len("$glbnet$"):] if net.startswith("$glbnet$") else net
         out.append({"net": net, "constraint_mhz": round(v.get("constraint", 0), 3),
                     "fmax_mhz": round(v.get("achieved", 0), 2),
                     "met": v.get("achieved", 0) >= v.get("constraint", 0)})
