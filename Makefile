@@ -242,6 +242,9 @@ synth: build deps-synth
 	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
 	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1-3 --out $(BUILD)/synth \
 	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
+	# the pipelined one does not fit the ECP5-25F: the largest ECP5 too (one seed, should it ever be placed)
+	python3 syn/synth.py --shader --targets ecp5-85f --seeds 1 --out $(BUILD)/synth \
+	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)

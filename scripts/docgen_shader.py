@@ -103,8 +103,12 @@ def block_bench_shader(f):
 
 def block_synth_shader(f):
     d = f.data("synth_shader")
-    out = ["| target | configuration | LUT4 | FF | logic cells (iCE40) | BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | "
-           "goal met |", "|" + "---|" * 11]
+    out = ["| target | configuration | LUT4 | FF | logic cells (iCE40) or slice halves (ECP5), of the device's | "
+           "BRAM | DSP | Fmax (MHz) | goal (MHz) | fits | goal met |", "|" + "---|" * 11]
+    # the seeds most rows were placed with (the file's own field is the last run's); a row placed with others
+    # says so beside its Fmax
+    placed = [tuple(r["seeds"]) for r in d["results"] if r.get("seeds") and r.get("fmax_mhz") is not None]
+    seeds = list(max(placed, key=placed.count)) if placed else (d.get("seeds") or [d["seed"]])
     for r in d["results"]:
         if r.get("pnr_skipped"):
             fm = "not placed: %s" % r["pnr_skipped"]
@@ -112,12 +116,18 @@ def block_synth_shader(f):
             fm = "placement failed"
         else:
             fm = "-" if r.get("fmax_mhz") is None else "%.1f" % r["fmax_mhz"]
+            if r.get("seeds") and r["seeds"] != seeds and r.get("fmax_mhz") is not None:
+                fm += " (seed%s %s)" % ("s" if len(r["seeds"]) > 1 else "", ", ".join(map(str, r["seeds"])))
+        # nextpnr's packed logic cells (iCE40) or slice halves (ECP5, --pack-only) against the device's count
+        # (syn/synth.py LIMITS)
+        ice = r["target"].startswith("ice40")
+        n = r.get("lc") if ice else r.get("comb_packed")
+        cells = "-" if n is None else "%d of %d" % (n, f.get("src.synth.LIMITS.%s.%s" % (r["target"], "lut" if ice else "comb")))
         out.append("| %s | %s | %d | %d | %s | %d | %d | %s | %s | %s | %s |" % (
-            r["target"], r["config"], r["lut"], r["ff"], r["lc"] if r.get("lc") is not None else "-", r["bram"],
+            r["target"], r["config"], r["lut"], r["ff"], cells, r["bram"],
             r["dsp"], fm, "-" if r.get("goal_mhz") is None else "%.1f" % r["goal_mhz"], "yes" if r["fits"] else "no",
             "-" if r.get("goal_mhz") is None else ("yes" if r["met"] else "no")))
     out.append("")
-    seeds = d.get("seeds") or [d["seed"]]
     out.append("(`make synth` on %s, placement seed%s %s%s.)" % (
         d["date"], "s" if len(seeds) > 1 else "", ", ".join(map(str, seeds)), "; Fmax the worst" if len(seeds) > 1 else ""))
     return "\n".join(out)

