@@ -198,10 +198,10 @@ def breakdown_totals(b, cells_limit):
 
 def nextpnr_clocks(report):
     out = []
-    for net, v in sorted(report.get("fmax", {}).items()):
-        # nextpnr-ecp5 names a clock by the global net it promotes it to ($glbnet$NAME) in some runs, by NAME
-        # in others: the design's own name either way
-        net = net[len("$glbnet$"):] if net.startswith("$glbnet$") else net
+    # nextpnr-ecp5 names a clock by the global net it promotes it to ($glbnet$NAME) in some runs, by NAME in
+    # others: the design's own name either way, in its order
+    strip = lambda n: n[len("$glbnet$"):] if n.startswith("$glbnet$") else n
+    for net, v in sorted((strip(n), v) for n, v in report.get("fmax", {}).items()):
         out.append({"net": net, "constraint_mhz": round(v.get("constraint", 0), 3),
                     "fmax_mhz": round(v.get("achieved", 0), 2),
                     "met": v.get("achieved", 0) >= v.get("constraint", 0)})

@@ -14,7 +14,7 @@ Each run (target, top, configuration, LANES) synthesizes once and places and rou
 {"target", "top", "config", "lanes", "lut", "ff", "bram", "dsp", "fmax_mhz" (the worst seed), "fmax_seeds",
 "icetime_mhz" (iCE40: icetime on each routed design, the worst), "mpix_s" (fmax x LANES), "goal_mhz", "fits",
 "met", "dsp_regs" (per DSP block: input and output registers used), "ccu2c" and "comb" (ECP5: carry cells, and
-LUT4 + 2 CCU2C, the least number of slice halves the design needs), "comb_packed" and "ff_packed" (ECP5:
+LUT4 + 2 CCU2C, the slice halves of its logic and carry LUTs; distributed RAM takes more), "comb_packed" and "ff_packed" (ECP5:
 nextpnr --pack-only's slice halves and flip-flops on the device, what decides the fit), "over" (the limits
 exceeded), ...} and prints a table; --data FILE also
 writes every run's figures to FILE (make synth: docs/data/synth.json, the table in docs/stream.md).
@@ -54,6 +54,7 @@ CONFIGS = {
 # UP5K, 2160p60's (500 Mpixel/s) with four on the ECP5.
 GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
          ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
+GOALS.update({("ecp5-85f", l): g for (t, l), g in list(GOALS.items()) if t == "ecp5-25f"})   # the same speed grade
 TARGETS = ("ice40-up5k", "ecp5-25f", "ecp5-85f", "xc7")
 # spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
 # (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
@@ -67,8 +68,9 @@ SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0,
 SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "ecp5-85f": ["pipelined"],
                "xc7": ["small", "pipelined"]}
 # an ECP5 slice half (TRELLIS_COMB) holds one LUT4 or half a CCU2C (a two-bit carry cell), so "comb" = LUT4 +
-# 2 CCU2C is the least number of them a design needs: what its size is checked against, with the flip-flops
-# (one per slice half; one per iCE40 logic cell)
+# 2 CCU2C counts the slice halves of a design's logic and carry (distributed RAM takes more): the first check of
+# its size, with the flip-flops (one per slice half; one per iCE40 logic cell); nextpnr's packed count decides
+# (one(): --pack-only)
 LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280, "ff": 5280},
           "ecp5-25f": {"bram": 56, "dsp": 28, "comb": 24288, "ff": 24288},
           "ecp5-85f": {"bram": 208, "dsp": 156, "comb": 83640, "ff": 83640}}
@@ -325,22 +327,25 @@ def one(target, top, config, lanes, args, tools):
     if not fits:
         res["pnr_skipped"] = "the cell counts exceed the device"
         res["over"] = {k: [res[k], v] for k, v in lim.items() if res[k] > v}
-    if target.startswith("ecp5"):
+    if target.startswith("ecp5") and not args.no_pnr:
         # nextpnr's packer (seconds): the slice halves and flip-flops the design takes on the device, more than
         # LUT4 + 2 CCU2C where a carry cell's half or a wide mux cannot share a slice; what decides whether it fits
         klog = os.path.join(out, name + ".pack.log")
         rc, _ = run(tools["nextpnr-ecp5"] + ECP5_DEVICE[target] + ["--speed", "6", "--json", json_net, "--pack-only"],
                     klog)
         used = packed_ecp5(open(klog).read())
-        if rc != 0 or not used:
-            fail("nextpnr --pack-only failed for %s (see %s)" % (name, klog))
-        res["comb_packed"], res["ff_packed"] = used["TRELLIS_COMB"][0], used["TRELLIS_FF"][0]
-        over = {k: list(v) for k, v in used.items() if v[0] > v[1]}
-        if over:
-            res["over"] = dict(res.get("over", {}), **{"packed " + k: v for k, v in over.items()})
-            if fits:
-                res["pnr_skipped"] = "the packed design exceeds the device"
+        if rc != 0 or not used:   # recorded as a placement failure is, the other runs go on
+            res["pnr_error"] = "nextpnr --pack-only failed (see %s)" % klog
+            used = {}
             fits = False
+        if used:
+            res["comb_packed"], res["ff_packed"] = used["TRELLIS_COMB"][0], used["TRELLIS_FF"][0]
+            over = {k: list(v) for k, v in used.items() if v[0] > v[1]}
+            if over:
+                res["over"] = dict(res.get("over", {}), **{"packed " + k: v for k, v in over.items()})
+                if fits:
+                    res["pnr_skipped"] = "the packed design exceeds the device"
+                fits = False
     if pnr_target and fits and not args.no_pnr:
         res["seeds"] = args.seeds
         res["fmax_seeds"], res["icetime_seeds"], res["pnr_s"] = [], [], 0.0
