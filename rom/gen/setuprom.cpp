@@ -1,11 +1,13 @@
-// setuprom - writes spec_setup's tables and parameter headers: setup_log2.hex, setup_exp2.hex,
-// setup_params.vh and setup_params.h (rom/gen/setup_format.h, docs/setup.md).
+// setuprom - writes spec_setup's files for a configuration: the EFU tables (setup_efu.hex), the finish stage's
+// exp2 table (setup_exp2.hex), the machine's microcode (setup_ucode.hex) and the parameter headers
+// (setup_params.vh, setup_params.h). rom/gen/setup_format.h defines the configurations, docs/setup.md explains them.
 //
-//   setuprom [--out DIR] [--config default|narrow] [--f N] [--iters N] [--zf N] [--lf N] [--ef N] [--tb N] [--rb N] [--gain-frac N]
-//            [--flat-log2 N] [--opp-tau-log2 N]
+//   setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--mul N] [--add N] [--efu N] [--misc N] [--idot N]
+//            [--max-ii N] [--fp-m N] [--fp-e N]
 //
-// With no options it writes the default files (the ones committed in rom/) into the current directory.
-// Bad input: a one-line message on stderr and exit code 2; nothing is written.
+// With no options it writes the ecp5 configuration (the files committed in rom/) into the current directory.
+// --rom-path is the directory the headers name the hex files by (default "rom", as the committed files are used
+// from the repository's root). Bad input: a one-line message on stderr and exit code 2; nothing is written.
 #include <iostream>
 
 #include "cli.h"
@@ -15,21 +17,26 @@ int main(int argc, char** argv) {
     using namespace spec;
     try {
         SetupFormat sf;
-        std::string out = ".";
+        std::string out = ".", rom_path = "rom";
         Args a(argc, argv, 1);
         while (!a.done()) {
             const std::string fl = a.flag();
             if (fl == "--help" || fl == "-h") {
-                std::cout << "usage: setuprom [--out DIR] [--config default|narrow] [--f N] [--iters N] [--zf N] [--lf N] [--ef N] [--tb N] [--rb N]\n"
-                             "                [--gain-frac N] [--flat-log2 N] [--opp-tau-log2 N]\n"
-                             "Writes setup_log2.hex, setup_exp2.hex, setup_params.vh and setup_params.h into DIR.\n";
+                std::cout << "usage: setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--mul N] [--add N] [--efu N]\n"
+                             "                [--misc N] [--idot N] [--max-ii N] [--fp-m N] [--fp-e N]\n"
+                             "Writes setup_efu.hex, setup_exp2.hex, setup_ucode.hex, setup_params.vh and setup_params.h\n"
+                             "into DIR (the configuration's tables, microcode and parameters; docs/setup.md).\n";
                 return 0;
             }
             if (fl == "--out") {
                 out = a.value(fl);
                 continue;
             }
-            if (fl == "--config") {   // a named format (setup_format.h); the options after it change it
+            if (fl == "--rom-path") {
+                rom_path = a.value(fl);
+                continue;
+            }
+            if (fl == "--config") {   // a named configuration; the options after it change it
                 try {
                     sf = setup_format_config(a.value(fl));
                 } catch (const std::invalid_argument& e) {
@@ -37,29 +44,34 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            int* field = fl == "--f"           ? &sf.f
-                         : fl == "--iters"     ? &sf.iters
-                         : fl == "--zf"        ? &sf.zf
-                         : fl == "--lf"        ? &sf.lf
-                         : fl == "--ef"        ? &sf.ef
-                         : fl == "--tb"        ? &sf.tb
-                         : fl == "--rb"        ? &sf.rb
-                         : fl == "--gain-frac" ? &sf.gain_frac
-                         : fl == "--flat-log2" ? &sf.flat_log2
-                         : fl == "--opp-tau-log2" ? &sf.opp_tau_log2
-                                               : nullptr;
+            int* field = fl == "--mul"      ? &sf.mach.mul
+                         : fl == "--add"    ? &sf.mach.add
+                         : fl == "--efu"    ? &sf.mach.efu
+                         : fl == "--misc"   ? &sf.mach.misc
+                         : fl == "--idot"   ? &sf.mach.idot
+                         : fl == "--max-ii" ? &sf.mach.max_ii
+                         : fl == "--fp-m"   ? &sf.fp.m
+                         : fl == "--fp-e"   ? &sf.fp.e
+                                            : nullptr;
             if (!field) throw UsageError("unknown option " + fl);
-            *field = static_cast<int>(parse_int(fl, a.value(fl), -64, 64));
+            *field = static_cast<int>(parse_int(fl, a.value(fl), 0, 4096));
         }
         try {
             sf.validate();
         } catch (const std::invalid_argument& e) {
             throw UsageError(e.what());
         }
-        write_setup_all(sf, out);
+        try {
+            write_setup_all(sf, out, rom_path);
+        } catch (const std::runtime_error& e) {   // no schedule within --max-ii, a file that cannot be written
+            throw UsageError(e.what());
+        }
         return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "setuprom: " << spec::printable(e.what()) << "\n";
+    } catch (const UsageError& e) {
+        std::cerr << "setuprom: " << e.what() << "\n";
         return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "setuprom: internal error: " << spec::printable(e.what()) << "\n";
+        return 3;
     }
 }
