@@ -134,15 +134,17 @@ module spec_setup_efu #(
         s3_e <= s2_e;
     end
 
-    // ---- 4: (next - this) * fraction
-    wire signed [TW:0] dlt = $signed({1'b0, s3_t1}) - $signed({1'b0, s3_t0});
+    // ---- 4: (next - this) * fraction; |next - this| < 1.5 * 2^(TAB_F - TAB_T) (the tables' slopes are below 1.5)
+    localparam DLW = TAB_F - TAB_T + 2;
+    wire signed [TW:0] dlt_full = $signed({1'b0, s3_t1}) - $signed({1'b0, s3_t0});
+    wire signed [DLW-1:0] dlt = dlt_full[DLW-1:0];
     reg signed [TW+TAB_R+1:0] s4_p;
     reg [TW-1:0] s4_t0;
     reg signed [KW-1:0] s4_k;
     reg s4_s, s4_zero, s4_log2, s4_lz;
     reg signed [FE-1:0] s4_e;
     always @(posedge clk) begin
-        s4_p <= dlt * $signed({1'b0, s3_f});
+        s4_p <= $signed({{(TW + 2 - DLW) {dlt[DLW-1]}}, dlt}) * $signed({1'b0, s3_f});
         s4_t0 <= s3_t0;
         s4_k <= s3_k;
         s4_s <= s3_s;
@@ -184,6 +186,6 @@ module spec_setup_efu #(
         .clk(clk), .s(s5_s), .x(s5_x), .k(s5_k), .r(r)
     );
     wire unused;
-    assign unused = &{1'b0, aq, prs, step[TW+1], v[TW+1:TW], pr[TAB_R-1:0]};
+    assign unused = &{1'b0, aq, prs, step[TW+1], v[TW+1:TW], pr[TAB_R-1:0], dlt_full[TW:DLW]};
 endmodule
 `default_nettype wire

@@ -33,10 +33,18 @@ module spec_setup_idot #(
     localparam CW = VEC_W + 1;
     localparam KW = FE + 4;
 
-    wire [2:0] vsa = va > 3'd4 ? 3'd4 : va;
-    wire [2:0] vsb = vb > 3'd4 ? 3'd4 : vb;
-    wire [3*CW-1:0] A = vec[vsa * 3 * CW +: 3 * CW];
-    wire [3*CW-1:0] B = vec[vsb * 3 * CW +: 3 * CW];
+    // the two vectors (5:1 each), then the components by the mode
+    function [3*CW-1:0] pick(input [2:0] sel, input [15*CW-1:0] v);
+        case (sel)
+            3'd0: pick = v[0 +: 3 * CW];
+            3'd1: pick = v[3 * CW +: 3 * CW];
+            3'd2: pick = v[6 * CW +: 3 * CW];
+            3'd3: pick = v[9 * CW +: 3 * CW];
+            default: pick = v[12 * CW +: 3 * CW];
+        endcase
+    endfunction
+    wire [3*CW-1:0] A = pick(va, vec);
+    wire [3*CW-1:0] B = pick(vb, vec);
     wire [XW-1:0] a0 = A[0 +: CW], a1 = A[CW +: CW], a2 = A[2*CW +: CW];
     wire [XW-1:0] b0 = B[0 +: CW], b1 = B[CW +: CW], b2 = B[2*CW +: CW];
     wire [XW-1:0] ac = comp == 2'd0 ? a0 : (comp == 2'd1 ? a1 : a2);

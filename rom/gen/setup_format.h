@@ -34,13 +34,13 @@ struct SetupFormat {
     int str_frac = 15;   //   UQ1.15, [0, 2)
 
     // ---- floating point ----
-    FpFmt fp;            // mantissa 22 bits, exponent 8, adder guard bits 3
+    FpFmt fp;            // mantissa 22 bits (the defaults in setup_fp.h are the ecp5 configuration's)
 
     // ---- the EFU's tables: 1/sqrt(x) on [1, 2) and [2, 4), 1/x on [1, 2), atan(x)/x on [0, 1], log2(x) on [1, 2);
     // 2^tab_t intervals each, words with tab_f fraction bits, read with linear interpolation on tab_r bits ----
     int tab_t = 10;
     int tab_r = 12;
-    int tab_f = 27;
+    int tab_f = 26;
 
     // ---- the finish stage: angles and C in fixed point ----
     int zf = 30;         // fraction bits of the angles before rounding to the descriptor's
@@ -67,7 +67,7 @@ struct SetupFormat {
         need(vec_w >= 8 && vec_w <= 16, "vec_w must be 8..16 (a 16-bit slot of the span-ends beat each)");
         need(vec_frac >= 1 && vec_frac <= vec_w - 1, "vec_frac must be 1..vec_w-1");
         need(str_w >= 4 && str_w <= 16 && str_frac >= 0 && str_frac <= str_w, "bad strength format (at most 16 bits)");
-        need(fp.m >= 12 && fp.m <= 30, "the mantissa must be 12..30 bits");
+        need(fp.m >= 12 && fp.m <= 24, "the mantissa must be 12..24 bits (the multiplier: 18 x 18 and shift-and-add)");
         need(fp.e >= 7 && fp.e <= 10, "the exponent must be 7..10 bits");
         need(fp.g >= 1 && fp.g <= 4, "the adder's guard bits must be 1..4");
         need(tab_t >= 4 && tab_t <= 12, "the tables must have 2^4..2^12 intervals");

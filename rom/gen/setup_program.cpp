@@ -178,9 +178,11 @@ private:
 };
 
 // Dead operations out, constants shared, ids renumbered in order.
-SetupProgram finalize(const std::vector<SetupNode>& n, const std::array<int, SO_COUNT>& out) {
+SetupProgram finalize(const std::vector<SetupNode>& n, const std::array<int, SO_COUNT>& out,
+                      const std::vector<std::pair<std::string, int>>& probes) {
     std::vector<char> live(n.size(), 0);
     for (int o : out) live[static_cast<size_t>(o)] = 1;
+    for (const auto& pr : probes) live[static_cast<size_t>(pr.second)] = 1;
     for (size_t i = n.size(); i-- > 0;) {
         if (!live[i]) continue;
         for (const SetupRef* r : {&n[i].a, &n[i].b, &n[i].c})
@@ -206,6 +208,7 @@ SetupProgram finalize(const std::vector<SetupNode>& n, const std::array<int, SO_
         p.n.push_back(x);
     }
     for (int o = 0; o < SO_COUNT; ++o) p.out[o] = map[static_cast<size_t>(out[o])];
+    for (const auto& pr : probes) p.probes.push_back({pr.first, map[static_cast<size_t>(pr.second)]});
     return p;
 }
 
@@ -219,6 +222,7 @@ SetupProgram build_setup_program(const SetupFormat& sf) {
     const SetupRef h1s = b.dot_i(BV_H1, BV_H1), h2s = b.dot_i(BV_H2, BV_H2);
     const V3 vN = b.cross_i(BV_N1, BV_N2), kH = b.cross_i(BV_H1, BV_H2);
     const SetupRef cN = b.dot_i(BV_N1, BV_N2), cH = b.dot_i(BV_H1, BV_H2), g11 = b.dot_i(BV_N1, BV_H1);
+    const SetupRef g22 = b.dot_i(BV_N2, BV_H2);
     const SetupRef pns = b.dot_i(BV_PN, BV_PN);
     const V3 UN = b.cross_i(BV_N1, BV_PN);   // N1 x perpendicular(N1): the host's axis for exactly opposite normals
     const V3 N1 = b.vec_i(BV_N1), H1 = b.vec_i(BV_H1), H2 = b.vec_i(BV_H2), PN = b.vec_i(BV_PN);
@@ -233,6 +237,7 @@ SetupProgram build_setup_program(const SetupFormat& sf) {
     const SetupRef cc = b.mul(cN, r12), pq = b.mul(cH, rh12);
     const V3 a = b.scl(N1, r1), pp = b.scl(H1, rh1), q = b.scl(H2, rh2);
     const SetupRef c1 = b.mul(g11, b.mul(r1, rh1));   // cos theta1 = N1.H1 / (|N1| |H1|)
+    const SetupRef f1 = b.mul(g22, b.mul(r2, rh2));   // cos theta2 = N2.H2 / (|N2| |H2|)
     const SetupRef vv = b.dot(v, v), kk = b.dot(k, k);
     // 1 + c, 1 - c, 1 + pq, 1 - pq with relative precision: |v|^2 = (1 - c)(1 + c), |k|^2 = (1 - pq)(1 + pq)
     const SetupRef cneg = b.lt(cc, zero), qneg = b.lt(pq, zero);
@@ -284,7 +289,7 @@ SetupProgram build_setup_program(const SetupFormat& sf) {
     // w = 1/(|m||h|) - 1 from 1 - |m|^2 |h|^2 = |e|^2 + |f|^2 - |e|^2 |f|^2
     const SetupRef mh4 = b.dot(m2, h2), ef4 = b.dot(e2, f2), mf4 = b.dot(m2, f2), eh4 = b.dot(e2, h2);
     const SetupRef Fn = neg(b.add(mf4, eh4, -1));        // F
-    const SetupRef R = b.add(mh4, ef4, -1);
+    const SetupRef R = b.add(c1, f1);   // absolute precision suffices (the half differences carry S - R and F)
     const SetupRef mh2 = b.mul(opc, opq, -2);            // |m|^2 |h|^2
     const SetupRef om = b.sub(b.add(omc, omq, -1), b.mul(omc, omq, -2));   // |e|^2 + |f|^2 - |e|^2 |f|^2
     const SetupRef rs = b.efu(SetupOp::RSQRT, mh2);
@@ -304,6 +309,7 @@ SetupProgram build_setup_program(const SetupFormat& sf) {
     const SetupRef sp_m = b.sel(b.lt(D, b.mul(R, R)), sp_m0, sp_m1);
     const SetupRef c12 = b.mul(c1, c1);
     const SetupRef A2m = b.add(c12, b.mul(sp_m, sp_m));
+    (void)mh4;
     // the host's conditions: f(1/2) > 1e-3, 0 <= R / S <= 1, g >= 1e-6, an amplitude <= 1, H2 != -H1
     SetupRef ok = b.mn(rule, b.lt(b.K(2e-3), S));
     ok = b.mn(ok, b.lt(b.K(-1e-300), R));
@@ -334,7 +340,11 @@ SetupProgram build_setup_program(const SetupFormat& sf) {
     out[SO_C1] = c1.id;
     out[SO_OPC] = opc.id;
     out[SO_OK] = ok.id;
-    return finalize(b.n, out);
+    const std::vector<std::pair<std::string, int>> probes = {
+        {"c", cc.id}, {"pq", pq.id}, {"c1", c1.id}, {"dd", dd.id}, {"ss", ss.id}, {"A sin(lambda) patent", sp_p.id},
+        {"gamma patent", gp.id}, {"R", R.id}, {"S", S.id}, {"S-R", Dm.id}, {"F", Fn.id}, {"gamma/2 midpoint", gm.id},
+        {"A sin(lambda) midpoint", sp_m.id}, {"A^2 midpoint", A2m.id}, {"A^2", A2.id}};
+    return finalize(b.n, out, probes);
 }
 
 // ---- evaluation ----------------------------------------------------------------------------------------------
@@ -379,6 +389,11 @@ SetupTables make_setup_tables(const SetupFormat& sf) {
     t.atang = table([](double x) { return x == 0.0 ? 1.0 : std::atan(x) / x; }, 0.0, 1.0, sf.tab_t, r, f);
     t.log2 = table([](double x) { return std::log2(x); }, 1.0, 2.0, sf.tab_t, r, f);
     t.exp2 = table([](double x) { return std::exp2(-x); }, 0.0, 1.0, sf.exp_t, sf.exp_r, sf.exp_f);
+    // the EFU multiplies the step between neighbouring words as TAB_F - TAB_T + 2 bits (rtl/spec_setup_efu.v)
+    for (const SetupTable* tb : {&t.rsqrt_lo, &t.rsqrt_hi, &t.rcp, &t.atang, &t.log2})
+        for (size_t i = 0; i + 1 < tb->w.size(); ++i)
+            if (std::llabs(tb->w[i + 1] - tb->w[i]) >= (int64_t(1) << (sf.tab_f - sf.tab_t + 1)))
+                throw std::logic_error("setup tables: a step exceeds the EFU's multiplier");
     return t;
 }
 

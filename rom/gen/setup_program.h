@@ -73,6 +73,7 @@ const char* setup_out_name(int o);
 struct SetupProgram {
     std::vector<SetupNode> n;                 // topological order, every node live
     std::array<int, SO_COUNT> out{};          // node ids
+    std::vector<std::pair<std::string, int>> probes;   // named intermediate values (tests, `specsim setup --trace`)
     int count(SetupUnit u) const;             // operations that unit type executes
 };
 

@@ -63,6 +63,8 @@ struct Consumer {
 
 }  // namespace
 
+constexpr int kSetupAttempts = 64;   // bindings tried at each II
+
 SetupSchedule setup_schedule(const SetupFormat& sf, const SetupProgram& p) {
     const SetupLatency L = setup_latency(sf);
     SetupSchedule s;
@@ -101,128 +103,157 @@ SetupSchedule setup_schedule(const SetupFormat& sf, const SetupProgram& p) {
     }
     const int out_bank = static_cast<int>(s.banks.size()) - 1;
 
-    // ---- binding: each operation to an instance of its type, load balanced, preferring instances whose banks
-    // already take the operands' producers (fewer write sources a bank)
-    s.inst.assign(N, -1);
-    s.swapped.assign(N, 0);
-    std::vector<int> load(static_cast<size_t>(s.units), 0);
-    std::vector<int> cap(kSetupUnitTypes, 0);
-    for (int ty = 0; ty < kSetupUnitTypes; ++ty) {
-        const int n = count_of(sf.mach, static_cast<SetupUnit>(ty));
-        cap[ty] = (p.count(static_cast<SetupUnit>(ty)) + n - 1) / n;
-    }
-    std::vector<std::set<int>> srcset(s.banks.size());
+    // ---- priorities: the longest path to the end (height); a topological order
+    std::vector<int> lat(N, 0);
     for (size_t i = 0; i < N; ++i) {
-        const SetupNode& x = p.n[i];
-        const SetupUnit ty = setup_op_unit(x.op);
-        if (ty == SetupUnit::NONE) continue;
-        const int t = static_cast<int>(ty);
-        int best = -1, best_cost = 1 << 30;
-        bool best_sw = false;
-        for (int k = 0; k < count_of(sf.mach, ty); ++k) {
-            const int u = s.unit_first[t] + k;
-            if (load[u] >= cap[t]) continue;
-            for (int sw = 0; sw < (commutative(x) ? 2 : 1); ++sw) {
-                int cost = load[u];
-                for (int j = 0; j < setup_op_operands(x.op); ++j) {
-                    const SetupRef& r = port_ref(x, sw != 0, j);
-                    if (p.n[r.id].op == SetupOp::CONST) continue;
-                    const int b = s.bank_of[static_cast<size_t>(u) * 3 + j];
-                    if (!srcset[b].count(s.inst[r.id])) cost += 4;
-                }
-                if (cost < best_cost) {
-                    best_cost = cost;
-                    best = u;
-                    best_sw = sw != 0;
-                }
-            }
+        const SetupUnit ty = setup_op_unit(p.n[i].op);
+        if (ty != SetupUnit::NONE) lat[i] = L.lat[static_cast<int>(ty)];
+    }
+    std::vector<std::vector<int>> users(N);
+    for (size_t i = 0; i < N; ++i)
+        for (int j = 0; j < setup_op_operands(p.n[i].op); ++j) {
+            const SetupRef& r = port_ref(p.n[i], false, j);
+            if (p.n[r.id].op != SetupOp::CONST) users[r.id].push_back(static_cast<int>(i));
         }
-        if (best < 0) throw std::logic_error("setup schedule: binding found no instance");
-        s.inst[i] = best;
-        s.swapped[i] = best_sw;
-        ++load[best];
-        for (int j = 0; j < setup_op_operands(x.op); ++j) {
-            const SetupRef& r = port_ref(x, best_sw, j);
-            if (p.n[r.id].op != SetupOp::CONST) srcset[s.bank_of[static_cast<size_t>(best) * 3 + j]].insert(s.inst[r.id]);
-        }
-    }
-    for (int o = 0; o < SO_COUNT; ++o) srcset[out_bank].insert(s.inst[p.out[o]]);
-
-    // consumers of each value: (node, port); the banks each value is written into
-    std::vector<std::vector<Consumer>> cons(N);
-    std::vector<std::vector<int>> dest(N);
-    for (size_t i = 0; i < N; ++i) {
-        const SetupNode& x = p.n[i];
-        for (int j = 0; j < setup_op_operands(x.op); ++j) {
-            const SetupRef& r = port_ref(x, s.swapped[i] != 0, j);
-            if (p.n[r.id].op == SetupOp::CONST) continue;
-            cons[r.id].push_back({static_cast<int>(i), j});
-            const int b = s.bank_of[static_cast<size_t>(s.inst[i]) * 3 + j];
-            if (std::find(dest[r.id].begin(), dest[r.id].end(), b) == dest[r.id].end()) dest[r.id].push_back(b);
-        }
-    }
-    for (int o = 0; o < SO_COUNT; ++o) {
-        auto& d = dest[static_cast<size_t>(p.out[o])];
-        if (std::find(d.begin(), d.end(), out_bank) == d.end()) d.push_back(out_bank);
-    }
-
-    // ---- the least II: the busiest unit, the busiest bank's writes, the finish's reads
-    int ii0 = SO_COUNT + 2;   // the finish reads SO_COUNT fields a span and keeps them two clocks more
-    for (int u = 0; u < s.units; ++u) ii0 = std::max(ii0, load[u]);
-    {
-        std::vector<int> writes(s.banks.size(), 0);
-        for (size_t i = 0; i < N; ++i)
-            for (int b : dest[i]) ++writes[b];
-        for (int w : writes) ii0 = std::max(ii0, w);
-    }
-    // priorities: the longest path to the end (height), then program order
     std::vector<int> height(N, 0);
     for (size_t i = N; i-- > 0;) {
-        const SetupUnit ty = setup_op_unit(p.n[i].op);
-        if (ty == SetupUnit::NONE) continue;
+        if (setup_op_unit(p.n[i].op) == SetupUnit::NONE) continue;
         int h = 0;
-        for (const Consumer& c : cons[i]) h = std::max(h, height[c.node]);
-        height[i] = h + L.lat[static_cast<int>(ty)] + 1;
+        for (int c : users[i]) h = std::max(h, height[static_cast<size_t>(c)]);
+        height[i] = h + lat[i] + 1;
     }
-    std::vector<size_t> order(N);
-    for (size_t i = 0; i < N; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return height[a] > height[b]; });
+    std::vector<int> cap(kSetupUnitTypes, 0);
+    int ii0 = SO_COUNT + 2;   // the finish reads SO_COUNT fields a span and keeps them two clocks more
+    for (int ty = 0; ty < kSetupUnitTypes; ++ty) {
+        const int n = count_of(sf.mach, static_cast<SetupUnit>(ty));
+        const int ops = p.count(static_cast<SetupUnit>(ty));
+        if (ops > 0 && n == 0) throw std::logic_error("setup schedule: no unit for an operation type");
+        cap[ty] = n > 0 ? (ops + n - 1) / n : 0;
+        ii0 = std::max(ii0, cap[ty]);
+    }
     const int max_ii = sf.mach.max_ii > 0 ? sf.mach.max_ii : 4 * ii0 + 16;
+    uint64_t rs = 0x9e3779b97f4a7c15ull;   // a fixed xorshift sequence: the same schedule on every host
+    auto rnd = [&rs](int n) {
+        rs ^= rs << 13;
+        rs ^= rs >> 7;
+        rs ^= rs << 17;
+        return static_cast<int>(rs % static_cast<uint64_t>(n));
+    };
+    std::vector<std::vector<Consumer>> cons(N);
+    std::vector<std::vector<int>> dest(N);
+    std::vector<std::set<int>> srcset(s.banks.size());
+    std::vector<int> load(static_cast<size_t>(s.units), 0);
+    std::vector<int> t(N, -1);
+    // Each II is tried with kSetupAttempts bindings: the first load balanced, preferring instances whose banks
+    // already take the operands' producers (fewer write sources a bank), the others with random tie-breaks
+    // in the binding's costs and the order of equal heights.
     for (int ii = ii0; ii <= max_ii; ++ii) {
-        std::vector<std::vector<char>> mrt(static_cast<size_t>(s.units), std::vector<char>(static_cast<size_t>(ii), 0));
-        std::vector<std::vector<char>> wrt(s.banks.size(), std::vector<char>(static_cast<size_t>(ii), 0));
-        std::vector<int> t(N, -1);
-        bool ok = true;
-        // list scheduling by height (the longest path to the end first; a topological order), each operation at
-        // its earliest free time
-        for (size_t oi = 0; oi < N && ok; ++oi) {
-            const size_t i = order[oi];
-            const SetupNode& x = p.n[i];
-            const SetupUnit ty = setup_op_unit(x.op);
-            if (ty == SetupUnit::NONE) continue;
-            const int lat = L.lat[static_cast<int>(ty)];
-            int est = 0;
-            for (int j = 0; j < setup_op_operands(x.op); ++j) {
-                const SetupRef& r = port_ref(x, s.swapped[i] != 0, j);
-                const SetupNode& y = p.n[r.id];
-                if (y.op == SetupOp::CONST) continue;
-                est = std::max(est, t[r.id] + L.lat[static_cast<int>(setup_op_unit(y.op))] + 1);
+        bool ok = false;
+        for (int attempt = 0; attempt < kSetupAttempts && !ok; ++attempt) {
+            const int noise = attempt == 0 ? 0 : 1 + attempt % 4;
+            std::vector<int> key(N);
+            for (size_t i = 0; i < N; ++i) key[i] = 8 * height[i] + (attempt == 0 ? 0 : rnd(8 + 4 * noise));
+            std::vector<size_t> order(N);
+            for (size_t i = 0; i < N; ++i) order[i] = i;
+            std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key[a] > key[b]; });
+            // binding
+            s.inst.assign(N, -1);
+            s.swapped.assign(N, 0);
+            load.assign(static_cast<size_t>(s.units), 0);
+            for (auto& ss : srcset) ss.clear();
+            for (size_t i = 0; i < N; ++i) {
+                const SetupNode& x = p.n[i];
+                const SetupUnit ty = setup_op_unit(x.op);
+                if (ty == SetupUnit::NONE) continue;
+                const int ty_i = static_cast<int>(ty);
+                int best = -1, best_cost = 1 << 30;
+                bool best_sw = false;
+                for (int k = 0; k < count_of(sf.mach, ty); ++k) {
+                    const int u = s.unit_first[ty_i] + k;
+                    if (load[u] >= cap[ty_i]) continue;
+                    for (int sw = 0; sw < (commutative(x) ? 2 : 1); ++sw) {
+                        int cost = 4 * load[u] + (noise ? rnd(4 * noise + 1) : 0);
+                        for (int j = 0; j < setup_op_operands(x.op); ++j) {
+                            const SetupRef& r = port_ref(x, sw != 0, j);
+                            if (p.n[r.id].op == SetupOp::CONST) continue;
+                            const int bk = s.bank_of[static_cast<size_t>(u) * 3 + j];
+                            if (!srcset[bk].count(s.inst[r.id])) cost += 16;
+                        }
+                        if (cost < best_cost) {
+                            best_cost = cost;
+                            best = u;
+                            best_sw = sw != 0;
+                        }
+                    }
+                }
+                if (best < 0) throw std::logic_error("setup schedule: binding found no instance");
+                s.inst[i] = best;
+                s.swapped[i] = best_sw;
+                ++load[best];
+                for (int j = 0; j < setup_op_operands(x.op); ++j) {
+                    const SetupRef& r = port_ref(x, best_sw, j);
+                    if (p.n[r.id].op != SetupOp::CONST) srcset[s.bank_of[static_cast<size_t>(best) * 3 + j]].insert(s.inst[r.id]);
+                }
             }
-            const int u = s.inst[i];
-            bool placed = false;
-            for (int tt = est; tt < est + ii * 4 && !placed; ++tt) {
-                if (ty == SetupUnit::IDOT && tt >= kSetupLin * ii) break;
-                if (mrt[u][tt % ii]) continue;
-                const int w = (tt + lat) % ii;
-                bool free = true;
-                for (int b : dest[i]) free &= !wrt[b][w];
-                if (!free) continue;
-                mrt[u][tt % ii] = 1;
-                for (int b : dest[i]) wrt[b][w] = 1;
-                t[i] = tt;
-                placed = true;
+            for (int o = 0; o < SO_COUNT; ++o) srcset[out_bank].insert(s.inst[p.out[o]]);
+            // consumers of each value: (node, port); the banks each value is written into
+            for (size_t i = 0; i < N; ++i) {
+                cons[i].clear();
+                dest[i].clear();
             }
-            ok = placed;
+            for (size_t i = 0; i < N; ++i) {
+                const SetupNode& x = p.n[i];
+                for (int j = 0; j < setup_op_operands(x.op); ++j) {
+                    const SetupRef& r = port_ref(x, s.swapped[i] != 0, j);
+                    if (p.n[r.id].op == SetupOp::CONST) continue;
+                    cons[r.id].push_back({static_cast<int>(i), j});
+                    const int bk = s.bank_of[static_cast<size_t>(s.inst[i]) * 3 + j];
+                    if (std::find(dest[r.id].begin(), dest[r.id].end(), bk) == dest[r.id].end()) dest[r.id].push_back(bk);
+                }
+            }
+            for (int o = 0; o < SO_COUNT; ++o) {
+                auto& d = dest[static_cast<size_t>(p.out[o])];
+                if (std::find(d.begin(), d.end(), out_bank) == d.end()) d.push_back(out_bank);
+            }
+            {   // a bank takes one write a clock
+                std::vector<int> writes(s.banks.size(), 0);
+                bool over = false;
+                for (size_t i = 0; i < N; ++i)
+                    for (int bk : dest[i]) over |= ++writes[static_cast<size_t>(bk)] > ii;
+                if (over) continue;
+            }
+            // list scheduling in that order, each operation at its earliest time with its issue slot and every
+            // destination bank's write slot free
+            std::vector<std::vector<char>> mrt(static_cast<size_t>(s.units), std::vector<char>(static_cast<size_t>(ii), 0));
+            std::vector<std::vector<char>> wrt(s.banks.size(), std::vector<char>(static_cast<size_t>(ii), 0));
+            t.assign(N, -1);
+            ok = true;
+            for (size_t oi = 0; oi < N && ok; ++oi) {
+                const size_t i = order[oi];
+                const SetupNode& x = p.n[i];
+                const SetupUnit ty = setup_op_unit(x.op);
+                if (ty == SetupUnit::NONE) continue;
+                int est = 0;
+                for (int j = 0; j < setup_op_operands(x.op); ++j) {
+                    const SetupRef& r = port_ref(x, false, j);
+                    if (p.n[r.id].op != SetupOp::CONST) est = std::max(est, t[r.id] + lat[r.id] + 1);
+                }
+                const int u = s.inst[i];
+                bool placed = false;
+                for (int tt = est; tt < est + ii * 4 && !placed; ++tt) {
+                    if (ty == SetupUnit::IDOT && tt >= kSetupLin * ii) break;
+                    if (mrt[u][tt % ii]) continue;
+                    const int w = (tt + lat[i]) % ii;
+                    bool free = true;
+                    for (int bk : dest[i]) free &= !wrt[bk][w];
+                    if (!free) continue;
+                    mrt[u][tt % ii] = 1;
+                    for (int bk : dest[i]) wrt[bk][w] = 1;
+                    t[i] = tt;
+                    placed = true;
+                }
+                ok = placed;
+            }
         }
         if (!ok) continue;
         // the finish: after the last result, field j at t_fin + j

@@ -151,6 +151,34 @@ SpanCheck check_span(const Model& core, const SetupFormat& sf, const SetupInput&
                 }
             }
         }
+        // the midpoint rule's tests (midpoint_fit: fm > 1e-3, 0 <= r <= 1, gamma >= 1e-6, A <= 1) decided
+        // within the backward error: N1.H1, N2.H2 and N.H each move by up to 2 eps when the vectors turn by
+        // eps; where a corner of that box decides the other way, the span is held to either answer (the
+        // fit kept, or the patent's gamma). Found at A = 1 + 5e-7, which random tilts of eps rarely cross.
+        if (rule == host::GammaRule::midpoint && !(s.flags & host::kFlat)) {
+            const Vec n1u = glm::normalize(e.n1), n2u = glm::normalize(e.n2);
+            const double fm = glm::dot(host::slerp(n1u, n2u, 0.5),
+                                       host::slerp(glm::normalize(e.h1), glm::normalize(e.h2), 0.5));
+            const bool ok = !(s.flags & host::kGammaFallback);
+            const double d = 2.0 * opt.eps;
+            bool edge = false;
+            for (int k = 0; k < 8 && !edge; ++k) {
+                double g, as;
+                edge = host::midpoint_fit(s.cos_t1 + (k & 1 ? d : -d), s.cos_t2 + (k & 2 ? d : -d),
+                                          fm + (k & 4 ? d : -d), &g, &as) != ok;
+            }
+            if (edge) {
+                c.ambiguous = true;
+                const host::SpanSetup alt[2] = {host::setup_span(core, e, str, in.n, in.l, host::GammaRule::patent),
+                                                host::setup_span(core, e, str, in.n, in.l, rule, false)};
+                for (const host::SpanSetup& sp : alt) {
+                    const std::vector<Bound> bp = bounds(core, sp, opt);
+                    for (size_t i = 0; i < b.size(); ++i) {
+                        wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                    }
+                }
+            }
+        }
         // N2 within the input's resolution of -N1: the axis of the rotation N2 -> N1 is the input rounding's
         // choice (the host takes it from the last bits' residue, the setup from perpendicular(N1) below its
         // threshold); widened over 32 axes u perpendicular to N1, N2 moved to N1 turned by pi - pi_gap about u

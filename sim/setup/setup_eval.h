@@ -15,6 +15,8 @@
 // reports whether the widened bound was needed. Where gamma is within the input's resolution (2^-14) of pi the
 // great circle from H1 to H2' ~ -H1 is the input rounding's choice, and where N2 is that close to -N1 the axis
 // of the rotation N2 -> N1 is: the bound is widened over all of them (33 circles, 32 axes).
+// Under the midpoint rule, where moving N1.H1, N2.H2 and N.H by 2 eps changes the rule's decision (fit or
+// fallback, e.g. an amplitude within rounding of 1), the bound is widened over both answers.
 #pragma once
 
 #include <cstdint>
