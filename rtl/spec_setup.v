@@ -14,7 +14,7 @@
 // fallback, 6 invalid (zero vector).
 //
 // The arithmetic runs on spec_setup_machine by the schedule setuprom made for the configuration whose
-// setup_params.vh is on the include path (rom/: ecp5; build/rom_setup_up5k: up5k): a span starts every II
+// setup_params.vh is on the include path (rom/: the ecp5 configuration's): a span starts every II
 // clocks, several in flight, its descriptor LATENCY clocks later, in order, into a FIFO; s_axis_tready (a
 // register) follows a one-beat holding register, and a span starts only with a credit for its place in the FIFO,
 // so the machine never stalls and nothing is lost when the sink stalls. Sustained: one span every II clocks.

@@ -117,7 +117,7 @@ module spec_setup_finish #(
     reg [W-1:0] p_nf, p_f;
     reg last;   // the last field arrived
     always @(posedge clk) begin
-        last <= fin_en && fin_field == 4'd8;
+        last <= ~rst & fin_en & (fin_field == 4'd8);
         if (fin_en) begin
             case (fin_field)
                 4'd0: flat_g <= less(fin_data, FLAT_W);

@@ -27,7 +27,8 @@ module spec_setup_fpround #(
     localparam LW = (XW > 64) ? 7 : (XW > 32) ? 6 : (XW > 16) ? 5 : (XW > 8) ? 4 : 3;   // bits of lp
     localparam signed [KW-1:0] EMIN = -(1 <<< (FE - 1));
     localparam signed [KW-1:0] EMAX = (1 <<< (FE - 1)) - 1;
-    localparam [LW-1:0] LP_TOP = XW - 1;
+    localparam [31:0] LP_TOP32 = XW - 1;
+    localparam [LW-1:0] LP_TOP = LP_TOP32[LW-1:0];
 
     // ---- 1: the leading one
     reg [LW-1:0] lp;

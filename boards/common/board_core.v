@@ -50,8 +50,7 @@ module board_core #(
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
-    parameter LOG2_FILE = "",          // spec_setup's tables
-    parameter EXP2_FILE = ""
+    parameter SETUP_DIR = "rom"        // the setups' tables and microcode (rom/setup_*.hex)
 ) (
     input  wire                  clk,
     input  wire                  rst_n,
@@ -143,8 +142,7 @@ module board_core #(
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(SHADERS), .SMALL(SHADER_SMALL),
         .BACKEND(SHADER_BACKEND),
-        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-        .EXP2_FILE(EXP2_FILE)
+        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),

@@ -68,8 +68,8 @@ struct Def {
     std::string name, value, doc;
 };
 // values past 31 bits as sized literals (a plain Verilog number is 32-bit signed)
-Def def(const std::string& n, long long v, const std::string& doc) {
-    return {n, (v >= (1LL << 31) ? "40'd" : "") + std::to_string(v), doc};
+Def def(const std::string& n, long long v, const std::string& doc, int width = 40) {
+    return {n, (v >= (1LL << 31) ? std::to_string(width) + "'d" : "") + std::to_string(v), doc};
 }
 
 std::vector<Def> defs(const SetupBuild& b, const std::string& rom_dir) {
@@ -332,6 +332,157 @@ void write_setup_all(const SetupFormat& sf, const std::string& dir, const std::s
     write_file(dir + "/setup_ucode.hex", uc);
     write_file(dir + "/setup_params.vh", vh);
     write_file(dir + "/setup_params.h", h);
+}
+
+// ---- the up5k configuration's small CORDIC setup ---------------------------------------------------------------
+
+std::vector<GainTerm> csd_terms(double x, int frac) {
+    // non-adjacent form of the integer round(x * 2^frac): digits in {-1, 0, +1}, no two neighbours non-zero
+    int64_t v = std::llround(std::ldexp(x, frac));
+    std::vector<GainTerm> t;
+    int pos = 0;
+    while (v != 0) {
+        if (v & 1) {
+            const int d = 2 - static_cast<int>(v & 3);   // +1 if v = 1 mod 4, -1 if v = 3 mod 4
+            t.push_back({d, frac - pos});
+            v -= d;
+        }
+        v >>= 1;
+        ++pos;
+    }
+    return {t.rbegin(), t.rend()};   // largest term first
+}
+
+double terms_value(const std::vector<GainTerm>& terms) {
+    double s = 0;
+    for (const GainTerm& g : terms) s += g.sign * std::ldexp(1.0, -g.shift);
+    return s;
+}
+
+SmallSetupConsts small_setup_consts(const SmallSetupFormat& sf) {
+    sf.validate();
+    SmallSetupConsts c;
+    c.gain = 1.0;
+    for (int i = 0; i < sf.iters; ++i) c.gain *= std::sqrt(1.0 + std::ldexp(1.0, -2 * i));
+    c.gain_terms = csd_terms(c.gain, sf.gain_frac);
+    c.half_terms = csd_terms(c.gain / 2.0, sf.gain_frac);
+    for (int i = 0; i < sf.iters; ++i) c.atan.push_back(std::llround(std::ldexp(std::atan(std::ldexp(1.0, -i)), sf.zf)));
+    const double pi = 3.14159265358979323846;
+    c.half_pi = std::llround(std::ldexp(pi / 2, sf.zf));
+    c.pi = std::llround(std::ldexp(pi, sf.zf));
+    c.two_pi = std::llround(std::ldexp(2 * pi, sf.zf));
+    // The N1 lane goes through G2 and Gamma1 as a follower of halving passes (gain G/2 each) and through the
+    // Lambda vectoring (gain G): it starts at 2^f * 4 / G^3 so that its final magnitude is A * 2^f.
+    c.n1_start = std::llround(std::ldexp(4.0 / (c.gain * c.gain * c.gain), sf.f));
+    c.log2_gain = std::llround(std::ldexp(std::log2(c.gain), sf.lf));
+    c.flat_z = int64_t(1) << (sf.zf + sf.flat_log2);
+    return c;
+}
+
+std::vector<uint64_t> make_small_log2(const SmallSetupFormat& sf) {
+    sf.validate();
+    std::vector<uint64_t> t;
+    const int n = 1 << sf.tb;
+    for (int j = 0; j <= n; ++j) t.push_back(static_cast<uint64_t>(std::llround(std::ldexp(std::log2(1.0 + double(j) / n), sf.lf))));
+    return t;
+}
+
+std::vector<uint64_t> make_small_exp2(const SmallSetupFormat& sf) {
+    sf.validate();
+    std::vector<uint64_t> t;
+    const int n = 1 << sf.tb;
+    for (int j = 0; j <= n; ++j) t.push_back(static_cast<uint64_t>(std::llround(std::ldexp(std::exp2(-double(j) / n), sf.ef))));
+    return t;
+}
+
+namespace {
+
+std::vector<Def> small_defs(const SmallSetupFormat& sf, const SmallSetupConsts& c) {
+    std::vector<Def> d = {
+        def("VEC_W", sf.vec_w, "end vector components, two's complement"),
+        def("VEC_FRAC", sf.vec_frac, "fraction bits of a component"),
+        def("STR_W", sf.str_w, "strength Is*ks, unsigned"),
+        def("STR_FRAC", sf.str_frac, "fraction bits of the strength"),
+        def("F", sf.f, "fraction bits of the CORDIC coordinates"),
+        def("W", sf.w(), "coordinate width"),
+        def("ITERS", sf.iters, "CORDIC micro-rotations per pass"),
+        def("ZF", sf.zf, "fraction bits of the angle lanes"),
+        def("ZW", sf.zw(), "angle lane width"),
+        def("LF", sf.lf, "fraction bits of log2 values"),
+        def("EF", sf.ef, "fraction bits of the exp2 table"),
+        def("TB", sf.tb, "log2 and exp2 tables: 2^TB intervals"),
+        def("RB", sf.rb, "interpolation fraction bits"),
+        def("OPP_K", sf.opp_k, "opposite normals: tilt tangent below 1/OPP_K"),
+        def("OPP_TAU", 1LL << (sf.f + sf.opp_tau_log2), "N2's projection below it after P2: exactly opposite normals"),
+        def("N1_START", c.n1_start, "start length of the N1 lane, round(2^F * 4 / G^3)"),
+        def("LOG2_GAIN", c.log2_gain, "round(log2(G) * 2^LF)"),
+        def("HALF_PI", c.half_pi, "round(pi/2 * 2^ZF)"),
+        def("PI", c.pi, "round(pi * 2^ZF)"),
+        def("TWO_PI", c.two_pi, "round(2 pi * 2^ZF)", sf.zw()),
+        def("FLAT_Z", c.flat_z, "gamma below 2^FLAT_LOG2 rad, in angle-lane units: the span is flat"),
+        def("GAIN_N", static_cast<long long>(c.gain_terms.size()), "terms of the multiplication by G"),
+        def("HALF_N", static_cast<long long>(c.half_terms.size()), "terms of the multiplication by G/2"),
+    };
+    return d;
+}
+
+std::string terms_fields(const std::vector<GainTerm>& t, bool signs) {
+    std::vector<uint64_t> v;
+    for (const GainTerm& g : t) v.push_back(signs ? (g.sign < 0 ? 1u : 0u) : static_cast<uint64_t>(g.shift & 0xff));
+    return packed(v, signs ? 1 : 8);
+}
+
+}  // namespace
+
+std::string small_verilog_header(const SmallSetupFormat& sf, const std::string& rom_dir) {
+    const SmallSetupConsts c = small_setup_consts(sf);
+    std::vector<uint64_t> atan;
+    for (int64_t a : c.atan) atan.push_back(static_cast<uint64_t>(a));
+    std::ostringstream o;
+    o << "// setup_small_params.vh - generated by setuprom --config up5k from rom/gen/setup_small_format.h; do not edit.\n"
+      << "// Parameters of spec_setup_small's arithmetic; setup_small_log2.hex and setup_small_exp2.hex beside this file\n"
+      << "// are made for them.\n"
+      << "`ifndef SETUP_SMALL_PARAMS_VH\n`define SETUP_SMALL_PARAMS_VH\n";
+    for (const Def& p : small_defs(sf, c)) o << "`define SMALL_" << p.name << " " << p.value << "  // " << p.doc << "\n";
+    o << "// atan(2^-i) * 2^ZF for i = 0 .. ITERS-1, ZW bits each, i = 0 in the lowest bits\n"
+      << "`define SMALL_ATAN " << packed(atan, sf.zw()) << "\n"
+      << "// t * G and t * G/2 as sums of sign * floor(t / 2^shift): shifts (8-bit two's complement) and signs (1 = minus)\n"
+      << "`define SMALL_GAIN_SHIFT " << terms_fields(c.gain_terms, false) << "\n"
+      << "`define SMALL_GAIN_NEG " << terms_fields(c.gain_terms, true) << "\n"
+      << "`define SMALL_HALF_SHIFT " << terms_fields(c.half_terms, false) << "\n"
+      << "`define SMALL_HALF_NEG " << terms_fields(c.half_terms, true) << "\n"
+      << "`define SMALL_LOG2_FILE \"" << rom_dir << "/setup_small_log2.hex\"\n"
+      << "`define SMALL_EXP2_FILE \"" << rom_dir << "/setup_small_exp2.hex\"\n"
+      << "`endif\n";
+    return o.str();
+}
+
+std::string small_cpp_header(const SmallSetupFormat& sf) {
+    const SmallSetupConsts c = small_setup_consts(sf);
+    std::ostringstream o;
+    o << "// setup_small_params.h - generated by setuprom --config up5k from rom/gen/setup_small_format.h; do not edit.\n"
+      << "#pragma once\n\nnamespace setup_small_params {\n";
+    for (const Def& p : small_defs(sf, c)) o << "constexpr long long " << p.name << " = " << p.value << ";  // " << p.doc << "\n";
+    o << "}  // namespace setup_small_params\n";
+    return o.str();
+}
+
+void write_small_all(const SmallSetupFormat& sf, const std::string& dir, const std::string& rom_dir) {
+    sf.validate();
+    // The images hold words 0 .. 2^tb - 1; the RTL has the last word (2^lf, 2^(ef-1)) as a constant.
+    const std::string hdr = "// generated by setuprom: tb=" + std::to_string(sf.tb) + " lf=" + std::to_string(sf.lf) +
+                            " ef=" + std::to_string(sf.ef) + " words=" + std::to_string(1 << sf.tb) + "\n";
+    std::vector<uint64_t> lw = make_small_log2(sf), ew = make_small_exp2(sf);
+    lw.pop_back();
+    ew.pop_back();
+    const std::string lg = words_image(lw, sf.lf, hdr);
+    const std::string ex = words_image(ew, sf.ef + 1, hdr);
+    const std::string vh = small_verilog_header(sf, rom_dir);
+    const std::string h = small_cpp_header(sf);
+    write_file(dir + "/setup_small_log2.hex", lg);
+    write_file(dir + "/setup_small_exp2.hex", ex);
+    write_file(dir + "/setup_small_params.vh", vh);
+    write_file(dir + "/setup_small_params.h", h);
 }
 
 }  // namespace spec
