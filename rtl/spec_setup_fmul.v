@@ -50,18 +50,21 @@ module spec_setup_fmul #(
             reg [18+L:0] s2_x;       // ah bl + al bh
             reg [2*L-1:0] s2_ll;
             reg [18+L:0] x;
+            reg [2*L-1:0] ll;
             integer i;
             always @(*) begin
                 x = {(19 + L) {1'b0}};
+                ll = {(2 * L) {1'b0}};
                 for (i = 0; i < L; i = i + 1) begin
                     if (bl[i]) x = x + ({{(L + 1) {1'b0}}, ah} << i);
                     if (al[i]) x = x + ({{(L + 1) {1'b0}}, bh} << i);
+                    if (bl[i]) ll = ll + ({{L{1'b0}}, al} << i);   // in logic too, not on a second DSP block
                 end
             end
             always @(posedge clk) begin
                 s2_hh <= ah * bh;
                 s2_x <= x;
-                s2_ll <= al * bl;
+                s2_ll <= ll;
                 s3_p <= ({{(2 * FM - 36) {1'b0}}, s2_hh} << (2 * L)) + ({{(2 * FM - 19 - L) {1'b0}}, s2_x} << L) +
                         {{(2 * FM - 2 * L) {1'b0}}, s2_ll};
             end
