@@ -257,6 +257,18 @@ std::string setup_cpp_header(const SetupBuild& b) {
       << "constexpr long long FLAGS_W = 7;  // flags on tuser\n"
       << "constexpr long long II = " << b.sched.ii << ";  // clocks a span\n"
       << "constexpr long long LATENCY = " << b.sched.latency << ";  // clocks from a span's start to its descriptor\n"
+      << "constexpr long long FP_M = " << sf.fp.m << ";  // mantissa bits, the leading one included\n"
+      << "constexpr long long FP_E = " << sf.fp.e << ";  // exponent bits\n"
+      << "constexpr long long TAB_T = " << sf.tab_t << ";  // the EFU's tables: 2^TAB_T intervals\n"
+      << "constexpr long long EXP_T = " << sf.exp_t << ";  // the finish stage's exp2 table: 2^EXP_T intervals\n";
+    const char* names[kSetupUnitTypes] = {"IDOT", "MUL", "ADD", "EFU", "MISC"};
+    const int units[kSetupUnitTypes] = {sf.mach.idot, sf.mach.mul, sf.mach.add, sf.mach.efu, sf.mach.misc};
+    for (int t = 0; t < kSetupUnitTypes; ++t) {
+        o << "constexpr long long UNITS_" << names[t] << " = " << units[t] << ";  // units of this kind\n"
+          << "constexpr long long OPS_" << names[t] << " = " << b.prog.count(static_cast<SetupUnit>(t))
+          << ";  // the program's operations on them, a span\n";
+    }
+    o << "constexpr long long BANKS = " << b.sched.banks.size() << ";  // operand banks (one per unit input and the finish's)\n"
       << "}  // namespace setup_params\n";
     return o.str();
 }
