@@ -19,7 +19,7 @@ namespace spec {
 // many micro-rotations (f = iters = 20). With f = iters = 16 (the iCEBreaker's narrow format before issue 28) the
 // default scene through the up5k shader was 11 levels of 255 from the double-precision reference and nearly
 // opposite normals 15 times the bound below; with 20 every kind of span is within the core's bound plus 2 % of C
-// (backward error 2^-15 rad: setup_config_check, docs/setup.md), and the tables are cut to match.
+// (backward error 2^-13 rad, two codes of the input: setup_config_check, docs/setup.md), and the tables are cut to match.
 struct SmallSetupFormat {
     // ---- interface ----
     int vec_w = 16;      // end vectors N1, N2, H1, H2: three two's complement components each

@@ -18,7 +18,7 @@ CheckOptions setup_config_check(SetupConfig c) {
     CheckOptions o;
     if (c == SetupConfig::up5k) {
         o.setup_share = 0.02;
-        o.eps = 1.0 / (1 << 15);
+        o.eps = 1.0 / (1 << 13);
     }
     return o;
 }

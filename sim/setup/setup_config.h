@@ -24,7 +24,7 @@ SetupConfig parse_setup_config(const std::string& s);
 Format shader_core_format(SetupConfig c);
 // The accuracy check of the configuration (sim/setup/setup_eval.h): ecp5 issue 13's (the setup's share of the
 // bound 0.2 % of C, backward error 2^-20 rad for ill-conditioned spans); up5k what its 20-bit CORDIC coordinates
-// support: 2 % of C, backward error 2^-15 rad (docs/setup.md, "Accuracy").
+// support: 2 % of C, backward error 2^-13 rad (two codes of the Q1.14 input) (docs/setup.md, "Accuracy").
 CheckOptions setup_config_check(SetupConfig c);
 
 // The configuration's setup, bit for bit: SetupModel (ecp5) or SmallSetupModel (up5k). Both write the default
