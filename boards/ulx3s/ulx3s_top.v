@@ -9,8 +9,9 @@
 //            (frame_store_packed: 320 x 240 RGB444 in 50 of the 56 DP16KD) shown pixel-doubled; the colour's
 //            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame; the light's
 //            table in logic (LIGHT_BRAM = 0: the buffer and the shader take every DP16KD);
-//   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by the pipelined
-//            spec_shader (a span every clock), which does not fit an ECP5-85F (simulation only).
+//   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by two
+//            ecp5 spec_shaders (the multiplier setup, a span every 28 clocks; one per pass, K = 8), which do not
+//            fit an ECP5-25F (simulation only; docs/boards.md).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
 //   clk_core the design clock: the whole of the core and the three TMDS encoders; twice the pixel clock at
