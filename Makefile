@@ -268,9 +268,8 @@ formal: deps deps-formal configure
 # Only spec_setup's and spec_shader's proofs (issues 13, 28): the multiplier setup and the shader, the small setup
 # (setup_engine) and the compact back end (spec_stream_seq): docs/data/formal_shader.json; their mutants:
 # docs/data/formal_mutants_shader.json. FORMAL_SHADER_JOBS=... runs some of them (the other rows stay).
-FORMAL_SHADER_JOBS ?= spec_setup,spec_setup_count,spec_shader,spec_stream_seq,setup_engine
-FORMAL_SHADER_MUT_JOBS ?= $(subst spec_setup_count,,$(subst spec_setup_count$(comma),,$(FORMAL_SHADER_JOBS)))
-comma := ,
+FORMAL_SHADER_JOBS ?= spec_setup,spec_shader,spec_stream_seq,setup_engine
+FORMAL_SHADER_MUT_JOBS ?= $(FORMAL_SHADER_JOBS)
 formal-shader: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
 	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader \
