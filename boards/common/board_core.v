@@ -221,6 +221,12 @@ module board_core #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, light_busy, wr_x[X_W-1:LB_AW]};
+    generate
+        if (LB_AW < X_W) begin : g_wr_x_high                           // the line buffer's address is narrower
+            assign unused = &{1'b0, light_busy, wr_x[X_W-1:LB_AW]};
+        end else begin : g_wr_x_all                                    // 1280 wide: every bit addresses the buffer
+            assign unused = &{1'b0, light_busy};
+        end
+    endgenerate
 endmodule
 `default_nettype wire
