@@ -31,18 +31,29 @@ target_link_libraries(boardmodel PUBLIC specrender specsetup)
 target_compile_options(boardmodel PRIVATE ${WARN})
 
 # The board tops with the primitives' models (Verilator --timing: the PLL models schedule their clocks)
-function(board_file_args out mode k)
+function(board_file_args out mode k setup_dir)
   set(${out} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
     "-GOBJ_FILE=\"${BOARD_GEN}/objects_${mode}.hex\"" "-GSHADE_FILE=\"${BOARD_GEN}/shade_${mode}.hex\""
     "-GLIGHT_FILE=\"${BOARD_GEN}/light_xy.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
     "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k}
-    "-GSETUP_DIR=\"${ROM_DIR}\"" PARENT_SCOPE)
+    "-GSETUP_DIR=\"${setup_dir}\"" -I${setup_dir} PARENT_SCOPE)
 endfunction()
 set(BOARD_VL_ARGS -Wall -Wno-fatal -I${ROM_DIR} -I${BOARD_GEN} -O3 --x-assign fast --x-initial fast --timing)
 # The frame-buffer designs build the up5k configuration's small setup, the racing design the ecp5 configuration's
-# multiplier setup (sim/board/board_shaders.cpp: board_setup_config, the model's side)
-function(board_verilate target board prefix mode k)
-  board_file_args(files ${mode} ${k})
+# multiplier setup (sim/board/board_shaders.cpp: board_setup_config, the model's side) on the race machine's units:
+# setuprom --format race (II 28, where the ecp5 configuration's units take 41: a line's clocks hold K = 8's
+# sub-spans only at 28), made at build time into RACE_SETUP_DIR; its setup_params.vh comes before rom/'s on the
+# include path. The arithmetic, and so the model, is the ecp5 configuration's.
+set(RACE_SETUP_DIR ${CMAKE_BINARY_DIR}/setup_race)
+add_custom_command(OUTPUT ${RACE_SETUP_DIR}/setup_params.vh ${RACE_SETUP_DIR}/setup_ucode.hex
+    ${RACE_SETUP_DIR}/setup_efu.hex ${RACE_SETUP_DIR}/setup_exp2.hex
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${RACE_SETUP_DIR}
+  COMMAND $<TARGET_FILE:setuprom> --out ${RACE_SETUP_DIR} --rom-path ${RACE_SETUP_DIR} --format race
+  DEPENDS setuprom COMMENT "setuprom --format race: the racing design's setup")
+add_custom_target(setup_race DEPENDS ${RACE_SETUP_DIR}/setup_params.vh)
+# board_verilate(target board prefix mode k setup_dir verilator-args...)
+function(board_verilate target board prefix mode k setup_dir)
+  board_file_args(files ${mode} ${k} ${setup_dir})
   if(board STREQUAL "icebreaker")
     set(src ${BOARD_CORE_RTL} ${BOARD_COMMON} ${BOARD_ICEBREAKER} ${BOARD_ICEBREAKER_SIM})
   else()
@@ -58,20 +69,22 @@ set(BOARDSIM_SOURCES sim/board/boardsim_main.cpp sim/board/board_harness.cpp sim
 add_executable(boardsim-quick ${BOARDSIM_SOURCES})
 add_dependencies(boardsim-quick rom_up5k)
 target_link_libraries(boardsim-quick PRIVATE boardmodel Threads::Threads)
-board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
-board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
-board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 8 -GMODE=3)
+add_dependencies(boardsim-quick setup_race)
+board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 ${ROM_DIR} -GTEST=1)
+board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 ${ROM_DIR} -GMODE=2)
+board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 8 ${RACE_SETUP_DIR} -GMODE=3)
 # boardsim: every board and mode (make board-sim)
 add_executable(boardsim EXCLUDE_FROM_ALL ${BOARDSIM_SOURCES})
 add_dependencies(boardsim rom_up5k)
 target_compile_definitions(boardsim PRIVATE BOARDSIM_FULL=1)
 target_link_libraries(boardsim PRIVATE boardmodel Threads::Threads)
-board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
-board_verilate(boardsim ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
-board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 8 -GMODE=3)
-board_verilate(boardsim icebreaker Vicebreaker_top 320x240 8 -GTEST=0)
-board_verilate(boardsim ulx3s Vulx3s_top 320x240 8 -GMODE=0)
-board_verilate(boardsim ulx3s Vulx3s_top_720 1280x720 8 -GMODE=1)
+add_dependencies(boardsim setup_race)
+board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 ${ROM_DIR} -GTEST=1)
+board_verilate(boardsim ulx3s Vulx3s_top_test 64x48 8 ${ROM_DIR} -GMODE=2)
+board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 8 ${RACE_SETUP_DIR} -GMODE=3)
+board_verilate(boardsim icebreaker Vicebreaker_top 320x240 8 ${ROM_DIR} -GTEST=0)
+board_verilate(boardsim ulx3s Vulx3s_top 320x240 8 ${ROM_DIR} -GMODE=0)
+board_verilate(boardsim ulx3s Vulx3s_top_720 1280x720 8 ${RACE_SETUP_DIR} -GMODE=1)
 
 # The shared modules on their own, for the unit tests (tests/test_board_rtl.cpp)
 add_library(vboard_modules STATIC tests/modules_stub.cpp)

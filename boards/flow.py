@@ -128,8 +128,8 @@ def yosys_script(b, mode, rom_dir, setup_dir, json_out, stat_out, synth_cmd):
     }
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += " -set SPLIT_K %d " % d["split_k"][mode] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
-    return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
-            % (GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
+    return ("read_verilog -defer -I%s -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
+            % (setup_dir, GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
 
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
@@ -216,8 +216,15 @@ def synthesize(board, mode, args, tools, out):
     if subprocess.call([args.specrom, "--config", "up5k", "--out", os.path.join(ROOT, rom_dir)],
                        stdout=subprocess.DEVNULL) != 0:
         fail("specrom --config up5k failed")
-    # both setups' tables and microcode are committed in rom/ (setuprom; tests/setup_rom_check.cmake)
+    # both setups' tables and microcode are committed in rom/ (setuprom; tests/setup_rom_check.cmake); racing the
+    # beam builds the ecp5 configuration on the race machine's units (setuprom --format race, boards/boards.cmake)
     setup_dir = "rom"
+    if d["setup_config"][mode] == "ecp5":
+        setup_dir = os.path.join(rel, "setup_race")
+        os.makedirs(os.path.join(ROOT, setup_dir), exist_ok=True)
+        if subprocess.call([args.setuprom, "--out", os.path.join(ROOT, setup_dir), "--rom-path",
+                            os.path.join(ROOT, setup_dir), "--format", "race"], stdout=subprocess.DEVNULL) != 0:
+            fail("setuprom --format race failed")
     res = {"mode": mode, "setup_config": d["setup_config"][mode]}
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)

@@ -56,7 +56,7 @@ SETUP_SMALL = ["--f", "22", "--iters", "8", "--zf", "20", "--lf", "12", "--ef", 
                "--gain-frac", "8", "--flat-log2", "-10"]
 
 # The schedule of the jobs that leave the multiplier setup's arithmetic out (spec_setup, spec_shader: `sched`):
-# setuprom's header for the ecp5 configuration with these values in place of its own (II = 28, LATENCY = 470),
+# setuprom's header for the ecp5 configuration with these values in place of its own (II = 41, LATENCY = 549),
 # written to <rom>_fv/setup_params.vh, which Yosys finds before the generated one. spec_setup sizes its FIFO from
 # them as always (FLY = LATENCY / II + 3 = 4: FIFO_AW = 2, 6 credits); the stubs (formal/fv_setup_stub.v) start a
 # span every II clocks and give its descriptor LATENCY clocks later, so two spans are in flight between them.

@@ -9,7 +9,7 @@
 // Yosys `expose`. The descriptor's widths are formal.py's reduced ones (n 4 bits, l 3 bits).
 //
 // The reduction: formal.py puts a setup_params.vh on the include path before the generated one, the same but
-// for II = 2 and LATENCY = 3 (FV_SCHED; the ecp5 configuration has II = 28, LATENCY = 470). spec_setup sizes
+// for II = 2 and LATENCY = 3 (FV_SCHED; the ecp5 configuration has II = 41, LATENCY = 549). spec_setup sizes
 // its FIFO from them as always (FLY = LATENCY / II + 3 = 4: FIFO_AW = 2, 2^FIFO_AW + 2 = 6 credits), so two
 // spans are in the stub's pipeline at once, a held beat waits up to II - 1 clocks for tau0, and the FIFO and
 // the credits fill as they do at full size; what the small numbers leave out is only more of the same stages.

@@ -1,6 +1,7 @@
 """docgen_shader.py - scripts/docgen.py's facts and blocks for spec_setup / spec_shader (issue 13, docs/setup.md).
 
-Facts: setup_cfg.NAME (rom/setup_params.h, the ecp5 configuration's), setup_small_cfg.NAME
+Facts: setup_cfg.NAME (rom/setup_params.h, the ecp5 configuration's), setup_race_cfg.NAME (`setuprom --format
+race`'s setup_params.h: the racing design's machine), setup_small_cfg.NAME
 (rom/setup_small_params.h, the up5k configuration's), render_shader.* (the default scene through the Verilated
 spec_shader: its statistics JSON), shader_latency.ecp5|up5k (`specsim shader-diagram`), setup_acc.ecp5|up5k.*
 (`specsim setup-accuracy --json`: worst, spans, widened, share, eps_log2). Blocks: setup-accuracy[-up5k],
@@ -13,22 +14,27 @@ import re
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-HEADS = ("setup_cfg", "setup_small_cfg", "render_shader", "shader_latency", "setup_acc")
+HEADS = ("setup_cfg", "setup_race_cfg", "setup_small_cfg", "render_shader", "shader_latency", "setup_acc")
 
 
 class DocError(Exception):
     """A fact or block that cannot be made (scripts/docgen.py reports it)."""
 
 
-def setup_header(f, name="setup_params.h"):
-    """rom/setup_params.h or rom/setup_small_params.h (setuprom): a setup's formats, beat layout, schedule."""
+def setup_header(f, name="setup_params.h", fmt=None):
+    """rom/setup_params.h or rom/setup_small_params.h (setuprom), or the header setuprom --format FMT writes: a
+    setup's formats, beat layout, schedule."""
     def make():
         vals = {}
-        text = open(os.path.join(ROOT, "rom", name)).read()
+        d = os.path.join(ROOT, "rom")
+        if fmt:
+            d = tempfile.mkdtemp(prefix="docgen_")
+            f.run([os.path.join(f.build, "setuprom"), "--out", d, "--rom-path", d, "--format", fmt])
+        text = open(os.path.join(d, name)).read()
         for m in re.finditer(r"constexpr (?:long long|int) (\w+) = (-?\d+);", text):
             vals[m.group(1)] = int(m.group(2))
         return vals
-    return f.once("setup_header." + name, make)
+    return f.once("setup_header." + name + "." + str(fmt), make)
 
 
 def render_shader(f):
@@ -67,6 +73,8 @@ def shader_diagram(f, config):
 def get(f, head, parts, key):
     if head == "setup_cfg":
         return setup_header(f)[parts[1]]
+    if head == "setup_race_cfg":
+        return setup_header(f, fmt="race")[parts[1]]
     if head == "setup_small_cfg":
         return setup_header(f, "setup_small_params.h")[parts[1]]
     if head == "setup_acc":   # setup_acc.ecp5|up5k.worst|spans|widened|share|eps_log2

@@ -29,7 +29,8 @@ RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. 
 --shader: spec_shader's configurations (issue 28, docs/setup.md) through syn/synth_wrap_shader.v: "up5k" (the
 small CORDIC setup with spec_stream_seq and spec_stream's up5k tables, for the iCE40 UP5K), "ecp5" (the
 multiplier setup with spec_stream's default configuration), "up5k-setup" and "ecp5-setup" (the setup alone),
-and "narrow-mul" (the multiplier setup at its smallest, one unit of each kind in the narrow format, with the
+"ecp5-race" (the ecp5 configuration on the race machine's units, setuprom --format race: the ULX3S's racing
+design's shader), and "narrow-mul" (the multiplier setup at its smallest, one unit of each kind in the narrow format, with the
 up5k back end: the row that shows it does not fit the UP5K); a run whose cell counts exceed the device is not
 placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
 in --out without running anything (e.g. after one was stopped).
@@ -69,13 +70,14 @@ SHADER_CONFIGS = {
     "up5k-setup": {"stream": "up5k", "ITERATIVE": 1, "SETUP_ONLY": 1},
     "ecp5": {"stream": "default", "ITERATIVE": 0},
     "ecp5-setup": {"stream": "default", "ITERATIVE": 0, "SETUP_ONLY": 1},
+    "ecp5-race": {"stream": "default", "ITERATIVE": 0, "format": ["--format", "race"]},
     "narrow-mul": {"stream": "up5k", "ITERATIVE": 0, "BACKEND": 1,
                    "format": ["--format", "narrow"]},
 }
 SHADER_GOALS = {("ice40-up5k", "up5k"): 50.0, ("ice40-up5k", "up5k-setup"): 62.2, ("ecp5-25f", "ecp5"): 125.0,
                 ("ecp5-25f", "ecp5-setup"): 125.0}
 # which configurations are run on which target by default
-SHADER_PLAN = {"ice40-up5k": ["up5k", "up5k-setup", "narrow-mul"], "ecp5-25f": ["ecp5", "ecp5-setup", "up5k"],
+SHADER_PLAN = {"ice40-up5k": ["up5k", "up5k-setup", "narrow-mul"], "ecp5-25f": ["ecp5", "ecp5-setup", "ecp5-race", "up5k"],
                "ecp5-85f": [], "xc7": ["up5k", "ecp5"]}
 # an ECP5 slice half (TRELLIS_COMB) holds one LUT4 or half a CCU2C (a two-bit carry cell), so "comb" = LUT4 +
 # 2 CCU2C counts the slice halves of a design's logic and carry (distributed RAM takes more): the first check of

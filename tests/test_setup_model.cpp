@@ -103,9 +103,9 @@ TEST(SetupModel, EfuFunctionsAgainstDouble) {
 }
 
 // The modulo schedule with banked operands, run cycle by cycle (SetupMachineSim), gives the program's values for
-// the ecp5 machine and for other unit counts and the narrow format.
+// the ecp5 machine, the race machine (the racing board design's), other unit counts and the narrow format.
 TEST(SetupModel, ScheduleRunsTheProgram) {
-    std::vector<SetupFormat> fs{kSf, setup_format_config("narrow")};
+    std::vector<SetupFormat> fs{kSf, setup_format_config("race"), setup_format_config("narrow")};
     SetupFormat few = kSf;
     few.mach.mul = 3;
     few.mach.add = 2;
@@ -248,6 +248,13 @@ TEST(SetupModel, NamedFormatsAndConfigurations) {
     EXPECT_NO_THROW(n.validate());
     EXPECT_EQ(n.fp.m, 16);
     EXPECT_THROW(setup_format_config("wide"), std::invalid_argument);
+    // the race machine: the ecp5 format and arithmetic on more units, a shorter II
+    const SetupFormat r = setup_format_config("race");
+    EXPECT_NO_THROW(r.validate());
+    EXPECT_EQ(r.fp.m, kSf.fp.m);
+    EXPECT_EQ(r.tab_t, kSf.tab_t);
+    EXPECT_GT(r.mach.mul, kSf.mach.mul);
+    EXPECT_LT(setup_schedule(r, SetupModel(r).program()).ii, setup_schedule(kSf, SetupModel(kSf).program()).ii);
     SetupFormat bad = kSf;
     bad.fp.m = 30;   // past the multiplier's 18 x 18 and shift-and-add
     EXPECT_THROW(bad.validate(), std::invalid_argument);

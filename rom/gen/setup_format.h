@@ -18,11 +18,11 @@ namespace spec {
 
 // The functional units of the machine (rtl/spec_setup_machine.v). A configuration sets how many of each.
 struct SetupMachine {   // the defaults are the ecp5 configuration's
-    int idot = 2;    // exact integer dot / cross products of the span ends, and their conversion to floating point
-    int mul = 6;     // floating-point multipliers
-    int add = 4;     // floating-point adders
-    int efu = 2;     // tables: 1/sqrt, 1/x, atan(x)/x, log2
-    int misc = 4;    // compare, select, min, max
+    int idot = 1;    // exact integer dot / cross products of the span ends, and their conversion to floating point
+    int mul = 4;     // floating-point multipliers
+    int add = 3;     // floating-point adders
+    int efu = 1;     // tables: 1/sqrt, 1/x, atan(x)/x, log2
+    int misc = 2;    // compare, select, min, max
     int max_ii = 0;  // 0: the least II the schedule reaches; else the schedule must reach this II or less
 };
 
@@ -87,12 +87,23 @@ struct SetupFormat {
 };
 
 // Named formats (docs/setup.md). "ecp5" is the ecp5 configuration's, committed in rom/ (the shader's accuracy goal,
-// issue 13's bound); "narrow" is the multiplier setup at its smallest for the iCE40 UP5K (a 16-bit mantissa for its
+// issue 13's bound; units chosen so that spec_shader fits the ECP5-25F); "race" is the same format and arithmetic
+// on more units (II 28 instead of 41, bit for bit the same results), which the ULX3S's racing-the-beam design
+// builds so that a line's clocks hold K = 8's sub-spans (boards/boards.cmake makes it at build time); "narrow" is the multiplier setup at its smallest for the iCE40 UP5K (a 16-bit mantissa for its
 // 16 x 16 DSP blocks, one unit of each kind): `make synth`'s row that shows it does not fit there, which is why
 // the up5k configuration keeps the small CORDIC setup (rom/gen/setup_small_format.h).
 inline SetupFormat setup_format_config(const std::string& name) {
     SetupFormat sf;
     if (name == "ecp5") return sf;
+    if (name == "race") {
+        sf.name = "race";
+        sf.mach.idot = 2;
+        sf.mach.mul = 6;
+        sf.mach.add = 4;
+        sf.mach.efu = 2;
+        sf.mach.misc = 4;
+        return sf;
+    }
     if (name == "narrow") {
         sf.name = "narrow";
         sf.fp.m = 16;
@@ -112,7 +123,7 @@ inline SetupFormat setup_format_config(const std::string& name) {
         sf.mach.misc = 1;
         return sf;
     }
-    throw std::invalid_argument("unknown multiplier setup format '" + name + "' (ecp5, narrow)");
+    throw std::invalid_argument("unknown multiplier setup format '" + name + "' (ecp5, race, narrow)");
 }
 
 }  // namespace spec

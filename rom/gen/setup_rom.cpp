@@ -269,6 +269,7 @@ std::string setup_cpp_header(const SetupBuild& b) {
           << ";  // the program's operations on them, a span\n";
     }
     o << "constexpr long long BANKS = " << b.sched.banks.size() << ";  // operand banks (one per unit input and the finish's)\n"
+      << "constexpr long long UC_W = " << b.lay.w << ";  // microcode word width\n"
       << "}  // namespace setup_params\n";
     return o.str();
 }

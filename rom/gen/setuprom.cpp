@@ -1,11 +1,12 @@
 // setuprom - writes a setup configuration's files (docs/setup.md explains them):
 //   ecp5 (the multiplier setup, spec_setup; rom/gen/setup_format.h): the EFU tables (setup_efu.hex), the finish
 //     stage's exp2 table (setup_exp2.hex), the machine's microcode (setup_ucode.hex) and the parameter headers
-//     (setup_params.vh, setup_params.h); --format narrow and the unit counts change it (the synthesis rows' variants)
+//     (setup_params.vh, setup_params.h); --format race / narrow and the unit counts change it (the racing design,
+//     the synthesis rows' variants)
 //   up5k (the small CORDIC setup, spec_setup_small; rom/gen/setup_small_format.h): setup_small_log2.hex,
 //     setup_small_exp2.hex, setup_small_params.vh, setup_small_params.h
 //
-//   setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--format ecp5|narrow] [--mul N] [--add N] [--efu N]
+//   setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--format ecp5|race|narrow] [--mul N] [--add N] [--efu N]
 //            [--misc N] [--idot N] [--max-ii N] [--fp-m N] [--fp-e N]           (ecp5)
 //            [--f N] [--iters N] [--zf N] [--lf N] [--ef N] [--tb N] [--rb N] [--gain-frac N] [--flat-log2 N]
 //            [--opp-tau-log2 N]                                                   (up5k: the formal jobs' widths)
@@ -29,7 +30,7 @@ int main(int argc, char** argv) {
         while (!a.done()) {
             const std::string fl = a.flag();
             if (fl == "--help" || fl == "-h") {
-                std::cout << "usage: setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--format ecp5|narrow]\n"
+                std::cout << "usage: setuprom [--out DIR] [--rom-path P] [--config ecp5|up5k] [--format ecp5|race|narrow]\n"
                              "                [--mul N] [--add N] [--efu N] [--misc N] [--idot N] [--max-ii N] [--fp-m N] [--fp-e N]\n"
                              "                [--f N] [--iters N] [--zf N] [--lf N] [--ef N] [--tb N] [--rb N] [--gain-frac N]\n"
                              "                [--flat-log2 N] [--opp-tau-log2 N] (up5k)\n"
