@@ -10,7 +10,8 @@
 //            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame; the light's
 //            table in logic (LIGHT_BRAM = 0: the buffer and the shader take every DP16KD);
 //   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by two
-//            ecp5 spec_shaders (the multiplier setup, a span every 28 clocks; one per pass, K = 8), which do not
+//            ecp5 spec_shaders (the multiplier setup built on the race machine's units, setuprom --format race:
+//            a span every 28 clocks; one per pass, K = 8; SETUP_DIR names its files), which do not
 //            fit an ECP5-25F (simulation only; docs/boards.md).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
