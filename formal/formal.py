@@ -153,8 +153,9 @@ WIDTHS_POW = with_args(WIDTHS, {"--tbl-frac": "8"}) + [
     "--mode", "pow", "--pow-seg-w", "2", "--pow-idx-w", "2", "--pow-frac", "2", "--pow-val-w", "8", "--pow-dlt-w",
     "8", "--pow-sh-w", "4", "--pow-xb", "4", "--pow-yf", "6", "--pow-yi", "3"]
 # The pipeline is 8 stages longer at these widths (spec_unit's first pixel in cycle 23 instead of 15; the longest
-# span, l = 7, ends in cycle 37): the base case and the covers reach as far past it as patent mode's jobs do.
-JOBS["spec_unit_pow"] = dict(JOBS["spec_unit"], rom="rom_pow", widths=WIDTHS_POW, bmc=48, cover=56)
+# span, l = 7, ends in cycle 37; a Start without a load repeats a span of l = 3, the second ending near cycle 60):
+# the base case and the covers reach as far past them as patent mode's jobs do.
+JOBS["spec_unit_pow"] = dict(JOBS["spec_unit"], rom="rom_pow", widths=WIDTHS_POW, bmc=48, cover=64)
 JOBS["spec_stream_pow"] = dict(JOBS["spec_stream"], rom="rom_pow", widths=WIDTHS_POW, cover=46)
 JOBS["spec_stream_seq_pow"] = dict(JOBS["spec_stream_seq"], rom="rom_pow", widths=WIDTHS_POW, cover=42)
 for _lanes, _pack in ((2, 1), (4, 0)):

@@ -24,8 +24,8 @@
 //
 // Every stage is registered and advances when `ce` is 1. Stages (P = PIPE: a register after each DSP block, and a
 // second one on each interpolated table's word, as spec_datapath):
-//   1-3    |angle| and d = K - |angle| (each in two halves: the inversion, the low halves, the high half of d),
-//          side and past from them, t = side ? d : |angle|
+//   1-3    |angle| and d = K - |angle| (the inversion; the halves, d's high half for both carries in; the
+//          choice), side and past from them, t = side ? d : |angle|
 //   4..    normalization, one level a stage (shift by 2^(POW_SEG_W-1) .. 1; the last capped): ROM 9's address
 //   +1     ROM 9 (its output register), then 1 + P registers on its word
 //   +2+P   interpolation: |step| * frac (a DSP block), value +- its rounding (one carry chain)
@@ -104,21 +104,19 @@ module spec_powpath #(
     endgenerate
 
     // ---- stages 1-3: |angle|, d = K - |angle|, side, past, t --------------------------------------------------
-    // |angle| = (angle ^ sign) + sign and d = K + ~(angle ^ sign) + ~sign, both in halves: stage 1 inverts,
-    // stage 2 adds the low halves (and |angle|'s high half, whose carry in is known from stage 1), stage 3 the high
-    // half of d with the low half's carry.
-    localparam [ANG_W-1:0] KV = POW_K;
-    // (d's operand ~(angle ^ sign) and carry ~sign get registers of their own, so that no inverter stands in
-    // front of its carry chain)
-    reg [ANG_W-1:0] ang_inv, d_op;
-    reg ang_neg, hi_cin, d_cin;
+    // |angle| = (angle ^ sign) + sign, and d = K - |angle| = ~((angle ^ sign) + ~K + sign): both sums have the
+    // stage-1 registers and constants as operands and the sign as carry in, so no inverter stands in front of a
+    // carry chain (d's inversion is the sum's own LUT). Stage 1 inverts; stage 2 adds the low halves, |angle|'s
+    // high half (its carry in known from stage 1) and d's high half for both carries in (carry select); stage 3
+    // picks d's high half by the low half's carry and t = side ? d : |angle| (two LUT levels, no carry chain).
+    localparam [ANG_W-1:0] NK = ~POW_K;
+    reg [ANG_W-1:0] ang_inv;
+    reg ang_neg, hi_cin;
     always @(posedge clk) begin
         if (ce) begin
             ang_inv <= angle ^ {ANG_W{angle[ANG_W-1]}};
             ang_neg <= angle[ANG_W-1];
             hi_cin <= angle[ANG_W-1] & (angle[H-1:0] == {H{1'b0}});
-            d_op <= angle ^ {ANG_W{~angle[ANG_W-1]}};
-            d_cin <= ~angle[ANG_W-1];
         end
     end
     wire [H-1:0] mag_lo_s;
@@ -133,29 +131,33 @@ module spec_powpath #(
         .a(ang_inv[ANG_W-2:H]), .b({(ANG_W - H - 1) {1'b0}}), .cin(hi_cin), .p(ang_inv[H]), .sum(mag_hi_s),
         .cout(mag_hi_co)
     );
-    wire [H-1:0] d_lo_s;
-    wire d_lo_co;
-    spec_add #(.W(H)) u_d_lo (
-        .a(KV[H-1:0]), .b(d_op[H-1:0]), .cin(d_cin), .p(ang_inv[0]), .sum(d_lo_s), .cout(d_lo_co)
+    wire [H-1:0] s_lo_s;
+    wire s_lo_co;
+    spec_add #(.W(H)) u_s_lo (
+        .a(ang_inv[H-1:0]), .b(NK[H-1:0]), .cin(ang_neg), .p(ang_inv[H-1]), .sum(s_lo_s), .cout(s_lo_co)
+    );
+    wire [ANG_W-H-1:0] s_hi0_s, s_hi1_s;
+    wire s_hi0_co_unused, s_hi1_co_unused;
+    spec_add #(.W(ANG_W - H), .CO(0)) u_s_hi0 (
+        .a(ang_inv[ANG_W-1:H]), .b(NK[ANG_W-1:H]), .cin(1'b0), .p(ang_inv[H]), .sum(s_hi0_s), .cout(s_hi0_co_unused)
+    );
+    spec_add #(.W(ANG_W - H), .CO(0)) u_s_hi1 (
+        .a(ang_inv[ANG_W-1:H]), .b(NK[ANG_W-1:H]), .cin(1'b1), .p(ang_inv[H]), .sum(s_hi1_s), .cout(s_hi1_co_unused)
     );
     reg [ANG_W-1:0] mag;
-    reg [H-1:0] d_lo;
-    reg d_c;
-    reg [ANG_W-H-1:0] inv_hi;
+    reg [H-1:0] s_lo;
+    reg s_c;
+    reg [ANG_W-H-1:0] s_hi0, s_hi1;
     always @(posedge clk) begin
         if (ce) begin
             mag <= {mag_hi_co, mag_hi_s, mag_lo_s};
-            d_lo <= d_lo_s;
-            d_c <= d_lo_co;
-            inv_hi <= d_op[ANG_W-1:H];
+            s_lo <= s_lo_s;
+            s_c <= s_lo_co;
+            s_hi0 <= s_hi0_s;
+            s_hi1 <= s_hi1_s;
         end
     end
-    wire [ANG_W-H-1:0] d_hi;
-    wire d_hi_co_unused;
-    spec_add #(.W(ANG_W - H), .CO(0)) u_d_hi (
-        .a(KV[ANG_W-1:H]), .b(inv_hi), .cin(d_c), .p(inv_hi[0]), .sum(d_hi), .cout(d_hi_co_unused)
-    );
-    wire [ANG_W-1:0] d = {d_hi, d_lo};
+    wire [ANG_W-1:0] d = ~{s_c ? s_hi1 : s_hi0, s_lo};
     wire side_w = |mag[ANG_W-1:ANG_FRAC];          // |angle| >= 1 rad
     reg side3, past3;
     reg [TW-1:0] t3;
@@ -169,10 +171,10 @@ module spec_powpath #(
     wire unused_front;
     generate
         if (TLOW > 0) begin : g_tlow
-            assign unused_front = &{1'b0, mag[TLOW-1:0], d[TLOW-1:0], mag_lo_co_unused, d_hi_co_unused,
-                                     ang_inv[ANG_W-1]};
+            assign unused_front = &{1'b0, mag[TLOW-1:0], d[TLOW-1:0], mag_lo_co_unused, s_hi0_co_unused,
+                                     s_hi1_co_unused, ang_inv[ANG_W-1]};
         end else begin : g_notlow
-            assign unused_front = &{1'b0, mag_lo_co_unused, d_hi_co_unused, ang_inv[ANG_W-1]};
+            assign unused_front = &{1'b0, mag_lo_co_unused, s_hi0_co_unused, s_hi1_co_unused, ang_inv[ANG_W-1]};
         end
     endgenerate
 
@@ -298,7 +300,7 @@ module spec_powpath #(
         end
     end
     wire unused_ip;
-    assign unused_ip = &{1'b0, ip_sum, ip_co_unused, ip_prod[POW_FRAC-2:0]};
+    assign unused_ip = &{1'b0, ip_sum, ip_co_unused, ip_prod[POW_FRAC-2:0], ip_neg_q};
 
     // ---- multiplier 11: n * value (operands in registers of their own, then the DSP block's product) ----------
     wire [N_W-1:0] n_m;
