@@ -235,7 +235,7 @@ deps-synth:
 SYNTH_RUNS ?= ice40-up5k:spec_stream:up5k:1 ice40-up5k:spec_stream:up5k:2 ecp5-25f:spec_stream:up5k:1 \
               ecp5-25f:spec_stream:up5k:4 ice40-up5k:spec_stream_seq:up5k:1 \
               ice40-up5k:spec_stream:up5k-pow:1 ice40-up5k:spec_stream:up5k-pow:2 ecp5-25f:spec_stream:up5k-pow:1 \
-              ecp5-25f:spec_stream:up5k-pow:4
+              ecp5-25f:spec_stream:up5k-pow:4 ice40-up5k:spec_stream_seq:up5k-pow:1
 synth: build deps-synth
 	@mkdir -p $(BUILD)/synth && rm -f $(BUILD)/synth/synth.json
 	@# rows of runs that cannot run here (no ECP5 tools) keep the committed figures
@@ -252,6 +252,8 @@ synth: build deps-synth
 	python3 syn/dsp_pack_check.py --target ecp5-25f --config up5k --lanes 1 --cycles 2000 \
 	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/dsp_pack_check.py --target ice40-up5k --config up5k-pow --lanes 2 --cycles 2000 \
+	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
+	python3 syn/dsp_pack_check.py --target ecp5-25f --config up5k-pow --lanes 1 --cycles 2000 \
 	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom

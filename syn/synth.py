@@ -172,6 +172,12 @@ def check_roms(config, rom9, rom12):
         fail("the ROM images do not fit the %s configuration's parameters" % config)
 
 
+# The ECP5: memories wider than 18 bits (pow mode's ROM 9, and ROM 12 in the up5k configuration: 512 x 36 and
+# 256 x 27) map to DP16KD's 18-bit ports (syn/ecp5_brams_x18.txt says why) before synth_ecp5 maps the others.
+ECP5_WIDE_ROMS = ("synth_ecp5 -top %s -run :map_ram; memory_libmap -lib syn/ecp5_brams_x18.txt t:$mem_v2 r:WIDTH>18 %%i; "
+                  "techmap -map +/lattice/brams_map_16kd.v; ")
+
+
 def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     if top in COMPANION:
         return companion_script(target, top, json_out, stat_out)
@@ -184,7 +190,7 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     synth = {
         "ice40": "synth_ice40 -dsp -top synth_wrap -json %s" % json_out,
-        "ecp5": "synth_ecp5 -top synth_wrap -json %s" % json_out,
+        "ecp5": ECP5_WIDE_ROMS % "synth_wrap" + "synth_ecp5 -top synth_wrap -run map_ram: -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap",
     }[FAMILY[target]]
     return ("read_verilog -defer -Irom %s syn/synth_wrap.v; chparam %s synth_wrap; %s; tee -o %s stat"
