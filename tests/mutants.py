@@ -174,7 +174,7 @@ MUTANTS = [
         name="pow-n0-zero-past-half-pi",
         file="rtl/spec_powpath.v",
         old="always @(posedge clk) if (ce) zero_a <= past3 & nz3;",
-        new="always @(posedge clk) if (ce) zero_a <= past3;",
+        new="always @(posedge clk) if (ce) zero_a <= past3 & (nz3 | 1'b1);",   # nz3 still read: Verilator -Wall
         target="spec_tests",
         cmd=["./spec_tests", "--gtest_filter=PowUnit.EqualsModelAndMeetsTheGoalForEveryN"],
         marker="n=0 ",
