@@ -22,8 +22,9 @@
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
 #               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
-#   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
-#   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
+#   make formal     formal proofs and covers of spec_unit and spec_stream, also in pow mode (yosys-smtbmc + z3,
+#                   reduced widths)
+#   make formal-mutants  the same properties on deliberately broken copies of rtl/ (also in pow mode): each must fail
 #   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
 #   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two),
 #                   LONG_SPANS (10^6) random and degenerate span ends through spec_setup / spec_shader
