@@ -109,11 +109,9 @@ lint: deps
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module $$top || exit 1; \
 	    echo "  $$top: clean"; \
 	done
-	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_setup -GITERATIVE=1 || exit 1
-	@echo "  spec_setup with ITERATIVE = 1: clean"
 	@verilator --lint-only -Wall -Irom $(RTL_CORE) $(RTL_SHADER) --top-module spec_shader -GITERATIVE=1 -GBACKEND=1 \
 	    -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1
-	@echo "  spec_shader with ITERATIVE = 1, BACKEND = 1 (spec_stream_seq), up5k configuration: clean"
+	@echo "  spec_shader in the up5k configuration (ITERATIVE = 1, BACKEND = 1, spec_stream's up5k tables): clean"
 	@for f in $(RTL_OTHER); do \
 	    verilator --lint-only -Wall -Irom -Irtl $$f || exit 1; \
 	    echo "  $$f (not in the core's file list): clean"; \
@@ -135,7 +133,8 @@ sim: build
 
 roms: build
 	$(BUILD)/specrom --out rom --rom-path rom/
-	$(BUILD)/setuprom --out rom
+	$(BUILD)/setuprom --out rom --config ecp5
+	$(BUILD)/setuprom --out rom --config up5k
 
 fig8: build
 	$(BUILD)/specsim fig8
@@ -258,12 +257,9 @@ synth: build deps-synth
 	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom
-	# spec_shader (issue 13, docs/setup.md): small on the UP5K and ECP5, pipelined on the ECP5 (Debian's Yosys)
+	# spec_shader's configurations and their setups alone (issue 28, docs/setup.md), each target's plan
 	python3 syn/synth.py --shader --targets ice40-up5k,ecp5-25f --seeds 1-3 --out $(BUILD)/synth \
-	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
-	# the pipelined one does not fit the ECP5-25F: the largest ECP5 too (one seed, should it ever be placed)
-	python3 syn/synth.py --shader --targets ecp5-85f --seeds 1 --out $(BUILD)/synth \
-	    --specrom $(BUILD)/specrom --ecp5-yosys yosys --data docs/data/synth_shader.json
+	    --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --ecp5-yosys yosys --data docs/data/synth_shader.json
 	python3 scripts/docgen.py --build $(BUILD) --update
 
 # The FuseSoC core tried through FuseSoC (optional: pip install fusesoc)
@@ -288,12 +284,11 @@ formal: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
 	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal --data docs/data/formal.json
 
-# Only spec_setup's and spec_shader's proofs (issue 13): the pipelined setup and the shader, the small setup
+# Only spec_setup's and spec_shader's proofs (issues 13, 28): the multiplier setup and the shader, the small setup
 # (setup_engine) and the compact back end (spec_stream_seq): docs/data/formal_shader.json; their mutants:
 # docs/data/formal_mutants_shader.json. FORMAL_SHADER_JOBS=... runs some of them (the other rows stay).
-FORMAL_SHADER_JOBS ?= spec_setup,spec_setup_count,spec_shader,spec_stream_seq,setup_engine
-FORMAL_SHADER_MUT_JOBS ?= $(subst spec_setup_count,,$(subst spec_setup_count$(comma),,$(FORMAL_SHADER_JOBS)))
-comma := ,
+FORMAL_SHADER_JOBS ?= spec_setup,spec_shader,spec_stream_seq,setup_engine
+FORMAL_SHADER_MUT_JOBS ?= $(FORMAL_SHADER_JOBS)
 formal-shader: deps deps-formal configure
 	cmake --build $(BUILD) -j$(JOBS) --target specrom setuprom
 	python3 formal/formal.py --specrom $(BUILD)/specrom --setuprom $(BUILD)/setuprom --work $(BUILD)/formal-shader \
@@ -403,9 +398,6 @@ lint-boards: deps configure
 	        $$(grep -v '^#' boards/$$b/$$b.f) boards/$$b/sim/*.v --top-module $${b}_top || exit 1; \
 	    echo "  $${b}_top (with the primitives' simulation models): clean"; \
 	done
-	@# the iCEBreaker as it is built: the setup in the narrow format (its header before rom/'s)
-	@verilator --lint-only -Wall --timing -I$(BUILD)/rom_setup_narrow -Irom -Irtl -Iboards/common/gen $(CORE_RTL) \
-	    $(BOARD_RTL) $$(grep -v '^#' boards/icebreaker/icebreaker.f) boards/icebreaker/sim/*.v \
-	    -GLOG2_FILE='"$(BUILD)/rom_setup_narrow/setup_log2.hex"' -GEXP2_FILE='"$(BUILD)/rom_setup_narrow/setup_exp2.hex"' \
-	    --top-module icebreaker_top || exit 1
-	@echo "  icebreaker_top with the narrow setup format: clean"
+	@verilator --lint-only -Wall --timing -Irom -Irtl -Iboards/common/gen $(CORE_RTL) $(BOARD_RTL) \
+	    $$(grep -v '^#' boards/ulx3s/ulx3s.f) boards/ulx3s/sim/*.v -GMODE=1 --top-module ulx3s_top || exit 1
+	@echo "  ulx3s_top racing the beam (MODE = 1: the multiplier setup): clean"

@@ -31,27 +31,25 @@ target_link_libraries(boardmodel PUBLIC specrender specsetup)
 target_compile_options(boardmodel PRIVATE ${WARN})
 
 # The board tops with the primitives' models (Verilator --timing: the PLL models schedule their clocks)
-# (setup: the directory of the setup format's header and tables; the header is found there before rom/)
-function(board_file_args out mode k setup)
-  set(${out} -I${setup} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
+function(board_file_args out mode k)
+  set(${out} "-GSCENE_FILE=\"${BOARD_GEN}/scene_${mode}.hex\"" "-GSPLIT_FILE=\"${BOARD_GEN}/split_${k}.hex\""
     "-GOBJ_FILE=\"${BOARD_GEN}/objects_${mode}.hex\"" "-GSHADE_FILE=\"${BOARD_GEN}/shade_${mode}.hex\""
     "-GLIGHT_FILE=\"${BOARD_GEN}/light_xy.hex\"" "-GROM9_FILE=\"${UP5K_ROM_DIR}/rom9_scale.hex\""
     "-GROM12_FILE=\"${UP5K_ROM_DIR}/rom12_cosk.hex\"" -GSPLIT_K=${k}
-    "-GLOG2_FILE=\"${setup}/setup_log2.hex\"" "-GEXP2_FILE=\"${setup}/setup_exp2.hex\"" PARENT_SCOPE)
+    "-GSETUP_DIR=\"${ROM_DIR}\"" PARENT_SCOPE)
 endfunction()
 set(BOARD_VL_ARGS -Wall -Wno-fatal -I${ROM_DIR} -I${BOARD_GEN} -O3 --x-assign fast --x-initial fast --timing)
-# The iCEBreaker's setup is the narrow format (its 4-bit picture; docs/boards.md), the ULX3S's the default one
-# (sim/board/board_shaders.cpp: board_setup_config, the model's side)
+# The frame-buffer designs build the up5k configuration's small setup, the racing design the ecp5 configuration's
+# multiplier setup (sim/board/board_shaders.cpp: board_setup_config, the model's side)
 function(board_verilate target board prefix mode k)
+  board_file_args(files ${mode} ${k})
   if(board STREQUAL "icebreaker")
-    board_file_args(files ${mode} ${k} ${SETUP_NARROW_DIR})
     set(src ${BOARD_CORE_RTL} ${BOARD_COMMON} ${BOARD_ICEBREAKER} ${BOARD_ICEBREAKER_SIM})
   else()
-    board_file_args(files ${mode} ${k} ${ROM_DIR})
     set(src ${BOARD_CORE_RTL} ${BOARD_COMMON} ${BOARD_ULX3S} ${BOARD_ULX3S_SIM})
   endif()
   verilate(${target} SOURCES ${src} TOP_MODULE ${board}_top PREFIX ${prefix}
-    VERILATOR_ARGS ${files} ${BOARD_VL_ARGS} ${ARGN})   # (the setup directory before rom/)
+    VERILATOR_ARGS ${files} ${BOARD_VL_ARGS} ${ARGN})
 endfunction()
 
 set(BOARDSIM_SOURCES sim/board/boardsim_main.cpp sim/board/board_harness.cpp sim/board/harness_icebreaker.cpp
@@ -62,7 +60,7 @@ add_dependencies(boardsim-quick rom_up5k)
 target_link_libraries(boardsim-quick PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
 board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
-board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 32 -GMODE=3)
+board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 8 -GMODE=3)
 # boardsim: every board and mode (make board-sim)
 add_executable(boardsim EXCLUDE_FROM_ALL ${BOARDSIM_SOURCES})
 add_dependencies(boardsim rom_up5k)
@@ -70,10 +68,10 @@ target_compile_definitions(boardsim PRIVATE BOARDSIM_FULL=1)
 target_link_libraries(boardsim PRIVATE boardmodel Threads::Threads)
 board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 -GTEST=1)
 board_verilate(boardsim ulx3s Vulx3s_top_test 64x48 8 -GMODE=2)
-board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 32 -GMODE=3)
+board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 8 -GMODE=3)
 board_verilate(boardsim icebreaker Vicebreaker_top 320x240 8 -GTEST=0)
 board_verilate(boardsim ulx3s Vulx3s_top 320x240 8 -GMODE=0)
-board_verilate(boardsim ulx3s Vulx3s_top_720 1280x720 32 -GMODE=1)
+board_verilate(boardsim ulx3s Vulx3s_top_720 1280x720 8 -GMODE=1)
 
 # The shared modules on their own, for the unit tests (tests/test_board_rtl.cpp)
 add_library(vboard_modules STATIC tests/modules_stub.cpp)

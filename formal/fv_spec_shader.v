@@ -1,14 +1,16 @@
 // fv_spec_shader - formal properties of spec_shader (spec_setup -> spec_stream, the span flags beside the
 // pixels), checked by formal/formal.py (make formal) with yosys-smtbmc and z3 at the reduced widths of formal.py.
 //
-// The core is `fv_core_shader`: rtl/spec_shader.v (pipelined setup, a 4-entry descriptor FIFO, a 4-entry flags
-// FIFO) with the setup's arithmetic left out (formal/fv_setup_pipe_stub.v passes n and l on and gives the flags
-// n[3:0]) and spec_stream's pixel value cut off (free). spec_setup's and spec_stream's own proofs (jobs
-// spec_setup, spec_setup_count, spec_stream) hold for any source and sink; what this job adds is the
-// composition: the flags FIFO, its gating of spec_stream's descriptor input, and tuser.
+// The core is `fv_core_shader`: rtl/spec_shader.v (the multiplier setup, ITERATIVE = 0, with a 4-word descriptor
+// FIFO; a 4-entry flags FIFO) with the setup's arithmetic left out as in the spec_setup job (formal/fv_setup_stub.v
+// at formal.py's FV_SCHED, II = 2 and LATENCY = 3: a started span's n and l passed on, its flags
+// {invalid, rule, 0, n[3:0]}) and spec_stream's pixel value cut off (free). spec_setup's and spec_stream's own
+// proofs (jobs spec_setup, spec_stream) hold for any source and sink; what this job adds is the composition: the
+// flags FIFO, its gating of spec_stream's descriptor input, and tuser.
 //
 // The source numbers its span beats (n = beats accepted so far, mod 2^N_W) and gives span k the length
-// l = k mod 2^L_W, so that every pixel's span and place in it are known from the counts at the output.
+// l = k mod 2^L_W, rule bit k[1] and a zero vector exactly when k[0] ^ k[2], so that every pixel's span, its place
+// in it and its flags are known from the counts at the output.
 // Specification (docs/setup.md):
 //   - AXI4-Stream source rules on the pixel side: m_axis_tvalid held until m_axis_tready, with m_axis_tdata,
 //     m_axis_tlast and m_axis_tuser unchanged (a reset may drop it);
@@ -34,6 +36,7 @@ module fv_spec_shader (
     localparam N_W = `SPEC_N_W;
     localparam L_W = `SPEC_L_W;
     localparam OUT_W = `SPEC_OUT_W;
+    localparam VEC_W = `SETUP_VEC_W;
     localparam RESP = 40;
 
     wire s_axis_tready, m_axis_tvalid, m_axis_tlast;
@@ -79,11 +82,25 @@ module fv_spec_shader (
             f_wait <= (f_inflight != 0 && m_axis_tready && !m_axis_tvalid) ? f_wait + 1'b1 : 0;
         end
     end
-    // the source numbers its beats and gives span k the length k mod 2^L_W
+    // the source numbers its beats and gives span k the length k mod 2^L_W, rule k[1], a zero vector iff k[0] ^ k[2]
+    function [6:0] flags_of(input [N_W-1:0] k);   // the stub's flags
+        flags_of = {k[0] ^ k[2], k[1], 1'b0, k[3:0]};
+    endfunction
+    wire [12*VEC_W-1:0] bvec;
+    genvar g;
+    generate
+        for (g = 0; g < 12; g = g + 1) begin : g_vec
+            assign bvec[g*VEC_W +: VEC_W] = s_axis_tdata[`SETUP_BEAT_VEC_LSB + 16 * g +: VEC_W];
+        end
+    endgenerate
+    wire b_zero = ~|bvec[0 +: 3*VEC_W] | ~|bvec[3*VEC_W +: 3*VEC_W] | ~|bvec[6*VEC_W +: 3*VEC_W] |
+                  ~|bvec[9*VEC_W +: 3*VEC_W];
     always @(*) begin
         if (s_axis_tvalid) begin
             assume (s_axis_tdata[`SETUP_BEAT_N_LSB +: N_W] == f_acc);
             assume (s_axis_tdata[`SETUP_BEAT_L_LSB +: L_W] == f_acc[L_W-1:0]);
+            assume (s_axis_tdata[`SETUP_BEAT_RULE_BIT] == f_acc[1]);
+            assume (b_zero == (f_acc[0] ^ f_acc[2]));
         end
     end
 
@@ -106,12 +123,12 @@ module fv_spec_shader (
                 assert (f_inflight != 0);
                 // the f_run-th pixel of span f_ended (l = f_ended mod 2^L_W), with that span's flags
                 assert (m_axis_tlast == (f_run == {1'b0, f_ended[L_W-1:0]}));
-                assert (m_axis_tuser == {3'b000, f_ended[3:0]});
+                assert (m_axis_tuser == flags_of(f_ended));
             end
             assert (f_wait < RESP);
             // tuser is the oldest span's flags as soon as that span is in the flags FIFO, before its first pixel
             // (a stale word loaded there would otherwise show only on pixels far past the bound)
-            if (f_rst_q && fcnt != 0) assert (m_axis_tuser == {3'b000, f_ended[3:0]});
+            if (f_rst_q && fcnt != 0) assert (m_axis_tuser == flags_of(f_ended));
         end
     end
 

@@ -1,25 +1,26 @@
-// fuzz_setup - spec_setup's bit-exact model (sim/setup/setup_model.h) on any span-ends beat: components of
-// any value (equal, opposite, tiny and extreme ones often), strength, n, l and gamma rule. Promises
-// (docs/setup.md): no internal width check fires (SetupModel keeps every intermediate inside its RTL width)
-// and no undefined behaviour; a zero vector gives the invalid flag with C = zeta0 = dzeta = 0, and only a
+// fuzz_setup - both configurations' setup models (sim/setup/setup_config.h: the multiplier setup's SetupModel,
+// the small CORDIC setup's SmallSetupModel) on any span-ends beat: components of any value (equal, opposite,
+// tiny and extreme ones often), strength, n, l and gamma rule. Promises (docs/setup.md): no internal check
+// fires (an internal error throws) and no undefined behaviour; a zero vector gives the invalid flag with C = zeta0 = dzeta = 0, and only a
 // zero vector does; the descriptor is one spec_stream accepts (C a UQ0.16 code, n and l as given, zeta0 and
 // the span's last angle inside the angle format, dzeta = 0 when flat or l = 0); the flags agree with C
 // (no highlight: 0, saturated: the largest code); and the span's pixels through the core are within the
-// issue's bound of the host's double-precision setup with exact cos^n (setup_eval.h, check_span; widened by
-// the host's own conditioning where the span is ill-conditioned; the host's patent rule where the gamma
-// fallback flag is set). Long spans are cut to 4096 intervals to
-// keep an execution fast.
+// configuration's bound of the host's double-precision setup with exact cos^n (setup_eval.h, check_span; widened
+// by the host's own conditioning where the span is ill-conditioned; the host's patent rule where the gamma
+// fallback flag is set; the small setup always falls back). Long spans are cut to 4096 intervals to keep an
+// execution fast.
 #include <random>
 #include <string>
 
 #include "fuzz_input.h"
 #include "setup_eval.h"
-#include "setup_model.h"
+#include "setup_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    static const spec::SetupModel sm;
+    static const spec::ConfigSetupModel models[2] = {spec::ConfigSetupModel(spec::SetupConfig::ecp5),
+                                                      spec::ConfigSetupModel(spec::SetupConfig::up5k)};
     static const spec::Model core;
-    const spec::SetupFormat& sf = sm.format();
+    const spec::SetupFormat& sf = models[0].format();
     fuzz::Input in(data, size);
     const int shared = in.byte();
     spec::SetupInput s;
@@ -43,7 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     s.l = static_cast<uint32_t>(in.range(0, (shared & 16) ? 4096 : 64));
     s.midpoint = (shared & 32) != 0;
 
-    const spec::SetupResult r = sm.run(s);   // an internal width error throws: a crash for the fuzzer
+    const spec::ConfigSetupModel& sm = models[(shared >> 6) & 1];
+    const spec::SetupResult r = sm.run(s);   // an internal error throws: a crash for the fuzzer
     bool zero = false;
     for (int k = 0; k < 4; ++k) zero = zero || (v[k][0] == 0 && v[k][1] == 0 && v[k][2] == 0);
     const bool invalid = (r.flags & spec::kSetupInvalid) != 0;
@@ -63,15 +65,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if ((r.flags & spec::kSetupFlat) || s.l == 0) fuzz::check(r.regs.dzeta == 0, "flat or single span with dzeta != 0");
     if (r.flags & spec::kSetupNoHighlight) fuzz::check(r.regs.c == 0, "no highlight but C != 0");
     if (r.flags & spec::kSetupCSaturated) fuzz::check(r.regs.c == (1u << core.format().c_w) - 1, "saturated but C not full");
-    if (s.midpoint) fuzz::check((r.flags & spec::kSetupGammaFallback) != 0, "midpoint asked and no fallback flag");
+    if (sm.small() && s.midpoint) fuzz::check((r.flags & spec::kSetupGammaFallback) != 0, "midpoint asked and no fallback flag");
+    if (!s.midpoint) fuzz::check((r.flags & spec::kSetupGammaFallback) == 0, "a fallback without the midpoint rule");
 
     // the gamma fallback flag says the patent rule's gamma was used: the host's patent rule is the reference
     spec::SetupInput ref = s;
     if (r.flags & spec::kSetupGammaFallback) ref.midpoint = false;
     std::mt19937_64 rng(shared);
-    const spec::SpanCheck c = spec::check_span(core, sf, ref, core.span(r.regs), rng);
+    const spec::CheckOptions co = spec::setup_config_check(sm.config());
+    const spec::SpanCheck c = spec::check_span(core, sf, ref, core.span(r.regs), rng, co);
     if (c.ratio > 1.0) {
-        fuzz::fail("pixel " + std::to_string(c.worst_pixel) + ": " + std::to_string(c.out) + " vs host " +
+        fuzz::fail(std::string(spec::setup_config_name(sm.config())) + ": pixel " + std::to_string(c.worst_pixel) + ": " + std::to_string(c.out) + " vs host " +
                    std::to_string(c.ref) + ", bound " + std::to_string(c.bound) + " (ratio " + std::to_string(c.ratio) +
                    ")");
     }

@@ -24,26 +24,26 @@
 // caller start the next span. rst: idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
-`include "setup_params.vh"
+`include "setup_small_params.vh"
 `include "spec_params.vh"
 module spec_setup_backend #(
-    parameter F = `SETUP_F,
-    parameter W = `SETUP_W,
-    parameter ZW = `SETUP_ZW,
-    parameter ZF = `SETUP_ZF,
-    parameter LF = `SETUP_LF,
-    parameter EF = `SETUP_EF,
-    parameter TB = `SETUP_TB,
-    parameter RB = `SETUP_RB,
-    parameter STR_W = `SETUP_STR_W,
-    parameter STR_FRAC = `SETUP_STR_FRAC,
+    parameter F = `SMALL_F,
+    parameter W = `SMALL_W,
+    parameter ZW = `SMALL_ZW,
+    parameter ZF = `SMALL_ZF,
+    parameter LF = `SMALL_LF,
+    parameter EF = `SMALL_EF,
+    parameter TB = `SMALL_TB,
+    parameter RB = `SMALL_RB,
+    parameter STR_W = `SMALL_STR_W,
+    parameter STR_FRAC = `SMALL_STR_FRAC,
     parameter C_W = `SPEC_C_W,
     parameter N_W = `SPEC_N_W,
     parameter L_W = `SPEC_L_W,
     parameter ANG_W = `SPEC_ANG_W,
     parameter ANG_FRAC = `SPEC_ANG_FRAC,
-    parameter LOG2_FILE = `SETUP_LOG2_FILE,
-    parameter EXP2_FILE = `SETUP_EXP2_FILE
+    parameter LOG2_FILE = `SMALL_LOG2_FILE,
+    parameter EXP2_FILE = `SMALL_EXP2_FILE
 ) (
     input  wire                 clk,
     input  wire                 rst,
@@ -70,10 +70,10 @@ module spec_setup_backend #(
 );
     localparam S = ZF - ANG_FRAC;
     localparam PW = LF + N_W + 8;           // ACC: the widest value, p = n * (-log2 A) - log2 Is
-    localparam signed [ZW-1:0] HALF_PI = `SETUP_HALF_PI;
-    localparam signed [ZW-1:0] PI_Z = `SETUP_PI;
-    localparam signed [ZW-1:0] TWO_PI = `SETUP_TWO_PI;
-    localparam signed [ZW-1:0] FLAT_Z = `SETUP_FLAT_Z;
+    localparam signed [ZW-1:0] HALF_PI = `SMALL_HALF_PI;
+    localparam signed [ZW-1:0] PI_Z = `SMALL_PI;
+    localparam signed [ZW-1:0] TWO_PI = `SMALL_TWO_PI;
+    localparam signed [ZW-1:0] FLAT_Z = `SMALL_FLAT_Z;
 
     // ---- register file: constants and kept values ---------------------------------------------------------------
     localparam [3:0] R_Z0 = 4'd0, R_LAV = 4'd1, R_LIS = 4'd2, R_GAM = 4'd3, R_ZETA = 4'd13, R_PI = 4'd4, R_2PI = 4'd5, R_HPI = 4'd6,
@@ -89,7 +89,7 @@ module spec_setup_backend #(
         rf[R_HPIM1] = {{(PW - ZW) {HALF_PI[ZW-1]}}, HALF_PI} - 1'b1;
         rf[R_S2] = 1 << (S - 1);
         rf[R_OFF] = F << LF;
-        rf[R_OFFF] = (F << LF) - `SETUP_LOG2_GAIN;
+        rf[R_OFFF] = (F << LF) - `SMALL_LOG2_GAIN;
         rf[R_LAMAX] = 31 << LF;
         rf[R_STRF] = STR_FRAC << LF;
     end

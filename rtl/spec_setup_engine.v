@@ -21,28 +21,28 @@
 // m_tready; the next span is taken once the descriptor has been handed over. rst: back to idle, output empty.
 `timescale 1ns / 1ps
 `default_nettype none
-`include "setup_params.vh"
+`include "setup_small_params.vh"
 `include "spec_params.vh"
 module spec_setup_engine #(
-    parameter VEC_W = `SETUP_VEC_W,
-    parameter F = `SETUP_F,
-    parameter W = `SETUP_W,
-    parameter ITERS = `SETUP_ITERS,
-    parameter ZW = `SETUP_ZW,
-    parameter ZF = `SETUP_ZF,
-    parameter LF = `SETUP_LF,
-    parameter EF = `SETUP_EF,
-    parameter TB = `SETUP_TB,
-    parameter RB = `SETUP_RB,
-    parameter STR_W = `SETUP_STR_W,
-    parameter STR_FRAC = `SETUP_STR_FRAC,
+    parameter VEC_W = `SMALL_VEC_W,
+    parameter F = `SMALL_F,
+    parameter W = `SMALL_W,
+    parameter ITERS = `SMALL_ITERS,
+    parameter ZW = `SMALL_ZW,
+    parameter ZF = `SMALL_ZF,
+    parameter LF = `SMALL_LF,
+    parameter EF = `SMALL_EF,
+    parameter TB = `SMALL_TB,
+    parameter RB = `SMALL_RB,
+    parameter STR_W = `SMALL_STR_W,
+    parameter STR_FRAC = `SMALL_STR_FRAC,
     parameter C_W = `SPEC_C_W,
     parameter N_W = `SPEC_N_W,
     parameter L_W = `SPEC_L_W,
     parameter ANG_W = `SPEC_ANG_W,
     parameter ANG_FRAC = `SPEC_ANG_FRAC,
-    parameter LOG2_FILE = `SETUP_LOG2_FILE,
-    parameter EXP2_FILE = `SETUP_EXP2_FILE
+    parameter LOG2_FILE = `SMALL_LOG2_FILE,
+    parameter EXP2_FILE = `SMALL_EXP2_FILE
 ) (
     input  wire         clk,
     input  wire         rst,
@@ -63,14 +63,14 @@ module spec_setup_engine #(
     output wire [6:0]          m_flags
 );
     localparam NRUN = 24;
-    localparam [ITERS*ZW-1:0] ATAN = `SETUP_ATAN;
-    localparam [8*`SETUP_GAIN_N-1:0] GSH = `SETUP_GAIN_SHIFT;
-    localparam [`SETUP_GAIN_N-1:0] GNEG = `SETUP_GAIN_NEG;
-    localparam [8*`SETUP_HALF_N-1:0] HSH = `SETUP_HALF_SHIFT;
-    localparam [`SETUP_HALF_N-1:0] HNEG = `SETUP_HALF_NEG;
-    localparam signed [ZW-1:0] HALF_PI = `SETUP_HALF_PI;
-    localparam [W-1:0] U = `SETUP_N1_START;
-    localparam signed [W-1:0] TAU = `SETUP_OPP_TAU;
+    localparam [ITERS*ZW-1:0] ATAN = `SMALL_ATAN;
+    localparam [8*`SMALL_GAIN_N-1:0] GSH = `SMALL_GAIN_SHIFT;
+    localparam [`SMALL_GAIN_N-1:0] GNEG = `SMALL_GAIN_NEG;
+    localparam [8*`SMALL_HALF_N-1:0] HSH = `SMALL_HALF_SHIFT;
+    localparam [`SMALL_HALF_N-1:0] HNEG = `SMALL_HALF_NEG;
+    localparam signed [ZW-1:0] HALF_PI = `SMALL_HALF_PI;
+    localparam [W-1:0] U = `SMALL_N1_START;
+    localparam signed [W-1:0] TAU = `SMALL_OPP_TAU;
 
     // ---- the runs: vector, plane (0: a = x, b = y, t = z; 1: a = z, b = x, t = y), role, halving -----------
     // vectors: 0 N1, 1 N2, 2 H1, 3 H2, 4 P (perpendicular(N1)), 5 N1 of the H1 frame ("M1")
@@ -230,18 +230,18 @@ module spec_setup_engine #(
                 if ({{24{sh[8*q+7]}}, sh[8*q +: 8]} == s) term_of = {1'b1, minus[q]};
         end
     endfunction
-    localparam [8*32-1:0] GSH32 = {{(8 * (32 - `SETUP_GAIN_N)) {1'b0}}, GSH};
-    localparam [8*32-1:0] HSH32 = {{(8 * (32 - `SETUP_HALF_N)) {1'b0}}, HSH};
-    localparam [31:0] GNEG32 = {{(32 - `SETUP_GAIN_N) {1'b0}}, GNEG};
-    localparam [31:0] HNEG32 = {{(32 - `SETUP_HALF_N) {1'b0}}, HNEG};
+    localparam [8*32-1:0] GSH32 = {{(8 * (32 - `SMALL_GAIN_N)) {1'b0}}, GSH};
+    localparam [8*32-1:0] HSH32 = {{(8 * (32 - `SMALL_HALF_N)) {1'b0}}, HSH};
+    localparam [31:0] GNEG32 = {{(32 - `SMALL_GAIN_N) {1'b0}}, GNEG};
+    localparam [31:0] HNEG32 = {{(32 - `SMALL_HALF_N) {1'b0}}, HNEG};
     wire [1:0] gterm[0:ITERS+1];
     wire [1:0] hterm[0:ITERS+1];
     wire [ZW-1:0] atab[0:31];
     genvar g;
     generate
         for (g = 0; g <= ITERS + 1; g = g + 1) begin : g_terms
-            assign gterm[g] = term_of(GSH32, GNEG32, `SETUP_GAIN_N, g - 1);
-            assign hterm[g] = term_of(HSH32, HNEG32, `SETUP_HALF_N, g - 1);
+            assign gterm[g] = term_of(GSH32, GNEG32, `SMALL_GAIN_N, g - 1);
+            assign hterm[g] = term_of(HSH32, HNEG32, `SMALL_HALF_N, g - 1);
         end
         for (g = 0; g < 32; g = g + 1) begin : g_atab
             assign atab[g] = (g < ITERS) ? ATAN[(g % ITERS)*ZW +: ZW] : {ZW{1'b0}};
@@ -283,7 +283,7 @@ module spec_setup_engine #(
     // the opposite test, rho2 * OPP_K, a free-running register (the DSP's output register): read at ST_WR's
     // phase 2, two clocks after the pair's last sum
     reg signed [W+9:0] rho2k;
-    always @(posedge clk) rho2k <= $signed(la) * `SETUP_OPP_K;
+    always @(posedge clk) rho2k <= $signed(la) * `SMALL_OPP_K;
     // the pair's operands (shifter stages, free-running), the angle lane's operand (set at rph 0) and the third
     // coordinate's gain term (or 0) with its carry in (set at rph 1)
     reg signed [W-1:0] op_a, op_b, op_t;

@@ -9,9 +9,11 @@
 // output: a descriptor enters spec_stream only while the FIFO has room, and the flags of the span whose
 // pixels are leaving wait in a register (m_axis_tuser) loaded when the span before it ends.
 //
-// ITERATIVE = 0: spec_setup fully pipelined (a new span every clock); with spec_stream's default
-// configuration, the shader keeps spec_stream's one pixel per clock. ITERATIVE = 1: the small setup
-// (one span at a time, docs/setup.md) for the iCE40 UP5K, usually with spec_stream's up5k configuration.
+// The two configurations (docs/setup.md):
+//   ecp5: ITERATIVE = 0, spec_setup (the multiplier setup: a span every II clocks, several in flight) with
+//         spec_stream (BACKEND = 0) in its default configuration;
+//   up5k: ITERATIVE = 1, spec_setup_small (the small CORDIC setup, one span at a time, for the iCE40 UP5K where
+//         the multiplier setup does not fit) with spec_stream_seq (BACKEND = 1) and spec_stream's up5k tables.
 // BACKEND: 0 = spec_stream (one pixel per clock across span boundaries); 1 = spec_stream_seq (the compact back
 // end, one span at a time: the same pixels, a few hundred flip-flops instead of a few thousand, datapath
 // latency + 2 clocks between spans; for the small setup, which takes thousands of clocks a span).
@@ -19,15 +21,18 @@
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
+`include "setup_small_params.vh"
 `include "spec_params.vh"
 module spec_shader #(
-    parameter ITERATIVE = 0,
-    parameter FIFO_AW = 9,                      // spec_setup's descriptor FIFO (pipelined setup)
+    parameter ITERATIVE = 0,                    // 0: spec_setup (multiplier); 1: spec_setup_small (CORDIC)
     parameter FLAGS_AW = (ITERATIVE != 0) ? 2 : 5,   // flags of up to 2^FLAGS_AW - 1 spans between setup and pixels
     parameter DELAY_RAM = 0,                    // 1: spec_stream's side-band delays in block RAM (UP5K: fewer cells)
     parameter BACKEND = 0,                      // 0: spec_stream; 1: spec_stream_seq (one span at a time)
-    parameter LOG2_FILE = `SETUP_LOG2_FILE,
+    parameter EFU_FILE = `SETUP_EFU_FILE,       // spec_setup's tables and microcode
     parameter EXP2_FILE = `SETUP_EXP2_FILE,
+    parameter UC_FILE = `SETUP_UC_FILE,
+    parameter SMALL_LOG2_FILE = `SMALL_LOG2_FILE,   // spec_setup_small's tables
+    parameter SMALL_EXP2_FILE = `SMALL_EXP2_FILE,
     // spec_stream's configuration (docs/stream.md)
     parameter SCALE_W = `SPEC_SCALE_W,
     parameter SCALE_FRAC = `SPEC_SCALE_FRAC,
@@ -59,11 +64,21 @@ module spec_shader #(
     wire d_valid, d_ready;
     wire [DESC_W-1:0] d_data;
     wire [6:0] d_flags;
-    spec_setup #(.ITERATIVE(ITERATIVE), .FIFO_AW(FIFO_AW), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_setup (
-        .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
-        .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(d_valid), .m_axis_tready(d_ready), .m_axis_tdata(d_data),
-        .m_axis_tuser(d_flags)
-    );
+    generate
+        if (ITERATIVE == 0) begin : g_mul
+            spec_setup #(.EFU_FILE(EFU_FILE), .EXP2_FILE(EXP2_FILE), .UC_FILE(UC_FILE)) u_setup (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
+                .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(d_valid), .m_axis_tready(d_ready), .m_axis_tdata(d_data),
+                .m_axis_tuser(d_flags)
+            );
+        end else begin : g_small
+            spec_setup_small #(.LOG2_FILE(SMALL_LOG2_FILE), .EXP2_FILE(SMALL_EXP2_FILE)) u_setup (
+                .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
+                .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(d_valid), .m_axis_tready(d_ready), .m_axis_tdata(d_data),
+                .m_axis_tuser(d_flags)
+            );
+        end
+    endgenerate
 
     // ---- the flags of the spans in spec_stream ---------------------------------------------------------------------
     reg [6:0] fmem[0:(1 << FLAGS_AW) - 1];

@@ -459,13 +459,6 @@ CALC = {
     # the iCEBreaker's routed Fmax over its design clock, in % (docs/boards.md)
     "icebreaker_slack_pct": lambda f: 100.0 * (f.data("bitstream_icebreaker")["designs"][0]["clocks"][0]["fmax_mhz"] /
                                                f.data("bitstream_icebreaker")["designs"][0]["clocks"][0]["constraint_mhz"] - 1.0),
-    # the pipelined shader against the ECP5-25F (docs/setup.md, README): its packed slice halves, its carry cells'
-    # share (2 slice halves each) and its flip-flops, each as a multiple of the device's count; on the 85F in %
-    "pipe25_comb_x": lambda f: shader_run(f, "ecp5-25f", "pipelined")["comb_packed"] / f.get("src.synth.LIMITS.ecp5-25f.comb"),
-    "pipe25_carry_x": lambda f: 2 * shader_run(f, "ecp5-25f", "pipelined")["ccu2c"] / f.get("src.synth.LIMITS.ecp5-25f.comb"),
-    "pipe25_ff_x": lambda f: shader_run(f, "ecp5-25f", "pipelined")["ff_packed"] / f.get("src.synth.LIMITS.ecp5-25f.ff"),
-    "pipe85_comb_pct": lambda f: 100.0 * shader_run(f, "ecp5-85f", "pipelined")["comb_packed"] /
-    f.get("src.synth.LIMITS.ecp5-85f.comb"),
     "long_pixels": lambda f: sum(r["pixels"] for r in f.data("test_long")["runs"]),
     "long_minutes": lambda f: f.data("test_long")["seconds"] / 60.0,
     # the rows of docs/bad-input.md that tests/bad_input.py runs (its ROW pattern)
@@ -882,7 +875,7 @@ def coverage_drift(d):
 # ---- the reference designs on boards (issue 15, docs/boards.md): make board-split, make bitstream -------------
 def block_board_split(f):
     out = []
-    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (the frame-buffer designs; the setup in the default format, the ULX3S's)")):
+    for name, label in (("board_split_640x480", "640 × 480 (ULX3S)"), ("board_split_320x240", "320 × 240 (the frame-buffer designs' raster; both tables through the ecp5 setup's model)")):
         d = f.data(name)
         out.append("%s, %d frames:" % (label, d["frames"]))
         out.append("")

@@ -1,8 +1,10 @@
 """docgen_shader.py - scripts/docgen.py's facts and blocks for spec_setup / spec_shader (issue 13, docs/setup.md).
 
-Facts: setup_cfg.NAME (rom/setup_params.h), render_shader.* (the default scene through the Verilated spec_shader:
-its statistics JSON), shader_latency.pipelined|small (`specsim shader-diagram`). Blocks: setup-accuracy,
-setup-accuracy-summary (`specsim setup-accuracy`), shader-diagram, bench-shader (docs/data/bench_shader.json),
+Facts: setup_cfg.NAME (rom/setup_params.h, the ecp5 configuration's), setup_small_cfg.NAME
+(rom/setup_small_params.h, the up5k configuration's), render_shader.* (the default scene through the Verilated
+spec_shader: its statistics JSON), shader_latency.ecp5|up5k (`specsim shader-diagram`), setup_acc.ecp5|up5k.*
+(`specsim setup-accuracy --json`: worst, spans, widened, share, eps_log2). Blocks: setup-accuracy[-up5k],
+setup-accuracy-summary[-up5k] (`specsim setup-accuracy`), shader-diagram, bench-shader (docs/data/bench_shader.json),
 synth-shader (docs/data/synth_shader.json).
 """
 import json
@@ -11,22 +13,22 @@ import re
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-HEADS = ("setup_cfg", "render_shader", "shader_latency")
+HEADS = ("setup_cfg", "setup_small_cfg", "render_shader", "shader_latency", "setup_acc")
 
 
 class DocError(Exception):
     """A fact or block that cannot be made (scripts/docgen.py reports it)."""
 
 
-def setup_header(f):
-    """rom/setup_params.h (setuprom): spec_setup's formats and beat layout."""
+def setup_header(f, name="setup_params.h"):
+    """rom/setup_params.h or rom/setup_small_params.h (setuprom): a setup's formats, beat layout, schedule."""
     def make():
         vals = {}
-        text = open(os.path.join(ROOT, "rom", "setup_params.h")).read()
+        text = open(os.path.join(ROOT, "rom", name)).read()
         for m in re.finditer(r"constexpr (?:long long|int) (\w+) = (-?\d+);", text):
             vals[m.group(1)] = int(m.group(2))
         return vals
-    return f.once("setup_header", make)
+    return f.once("setup_header." + name, make)
 
 
 def render_shader(f):
@@ -40,9 +42,15 @@ def render_shader(f):
     return f.once("render_shader", make)
 
 
-def setup_accuracy(f):
-    """`specsim setup-accuracy` (the shader's pixels against the host's double-precision setup): its text."""
-    return f.once("setup_accuracy", lambda: f.run([f.specsim, "setup-accuracy"]))
+def setup_accuracy(f, config="ecp5"):
+    """`specsim setup-accuracy --config C` (the shader's pixels against the host's double-precision setup): its
+    text and its JSON."""
+    def make():
+        d = tempfile.mkdtemp(prefix="docgen_")
+        js = os.path.join(d, "acc.json")
+        text = f.run([f.specsim, "setup-accuracy", "--config", config, "--json", js])
+        return {"text": text, "json": json.load(open(js))}
+    return f.once("setup_accuracy." + config, make)
 
 
 def shader_diagram(f, config):
@@ -59,6 +67,13 @@ def shader_diagram(f, config):
 def get(f, head, parts, key):
     if head == "setup_cfg":
         return setup_header(f)[parts[1]]
+    if head == "setup_small_cfg":
+        return setup_header(f, "setup_small_params.h")[parts[1]]
+    if head == "setup_acc":   # setup_acc.ecp5|up5k.worst|spans|widened|share|eps_log2
+        obj = setup_accuracy(f, parts[1])["json"]
+        if len(parts) < 3 or parts[2] not in obj:
+            raise DocError("unknown fact %s" % key)
+        return obj[parts[2]]
     if head == "render_shader":
         obj = render_shader(f)
         for p in parts[1:]:
@@ -66,38 +81,36 @@ def get(f, head, parts, key):
                 raise DocError("unknown fact %s (no '%s')" % (key, p))
             obj = obj[p]
         return obj
-    if head == "shader_latency":   # shader_latency.pipelined|small: clocks from a beat to its first pixel
+    if head == "shader_latency":   # shader_latency.ecp5|up5k: clocks from a beat to its first pixel
         return shader_diagram(f, parts[1])["latency"]
     raise DocError("unknown fact %s" % key)
 
 
-def block_setup_accuracy(f):
-    return "\n".join(l for l in setup_accuracy(f).splitlines() if l.startswith("|"))
+def block_setup_accuracy(f, config="ecp5"):
+    return "\n".join(l for l in setup_accuracy(f, config)["text"].splitlines() if l.startswith("|"))
 
 
-def block_setup_accuracy_summary(f):
-    return next(l for l in setup_accuracy(f).splitlines() if l.startswith("worst error / bound"))
+def block_setup_accuracy_summary(f, config="ecp5"):
+    return next(l for l in setup_accuracy(f, config)["text"].splitlines() if l.startswith("worst error / bound"))
 
 
 def block_shader_diagram(f):
-    return "```\n" + shader_diagram(f, "pipelined")["text"].rstrip("\n") + "\n```"
+    return "```\n" + shader_diagram(f, "ecp5")["text"].rstrip("\n") + "\n```"
 
 
 def block_bench_shader(f):
     b = f.data("bench_shader")
-    out = ["| image | spans | pixels | pixels a span | spec_shader clocks | spec_shader pixels per clock | "
-           "spec_stream alone, pixels per clock | shader / stream alone |", "|---|---|---|---|---|---|---|---|"]
+    out = ["| configuration | stream | beats | pixels a beat | clocks | clocks a span |", "|---|---|---|---|---|---|"]
+    for r in b["clocks_a_span"]:
+        out.append("| %s | %s | %d | %.2f | %d | %.2f |" % (r["config"], r["stream"], r["spans"], r["pixels"] / r["spans"],
+                                                          r["cycles"], r["clocks_a_span"]))
+    out += ["", "| image (ecp5) | spans | pixels | pixels a span | spec_shader clocks | spec_shader pixels per clock | "
+            "spec_stream alone, pixels per clock | shader / stream alone |", "|---|---|---|---|---|---|---|---|"]
     for r in b["scenes"]:
         sp, st = r["pixels"] / r["shader_cycles"], r["pixels"] / r["stream_cycles"]
         out.append("| %s | %d | %d | %.2f | %d | %.4f | %.4f | %.4f |" % (
             r["image"].replace("x", " × "), r["spans"], r["pixels"], r["pixels"] / r["spans"], r["shader_cycles"],
             sp, st, sp / st))
-    sm = b["small"]
-    out.append("")
-    out.append("Small configuration (the setup one span at a time), the first %d spans of the 512 × 512 scene: "
-               "%d clocks, %.1f clocks a span (%.5f spans per clock), %.4f pixels per clock." % (
-                   sm["spans"], sm["cycles"], sm["cycles"] / sm["spans"], sm["spans"] / sm["cycles"],
-                   sm["pixels"] / sm["cycles"]))
     return "\n".join(out)
 
 
@@ -136,6 +149,8 @@ def block_synth_shader(f):
 BLOCKS = {
     "setup-accuracy": block_setup_accuracy,
     "setup-accuracy-summary": block_setup_accuracy_summary,
+    "setup-accuracy-up5k": lambda f: block_setup_accuracy(f, "up5k"),
+    "setup-accuracy-summary-up5k": lambda f: block_setup_accuracy_summary(f, "up5k"),
     "shader-diagram": block_shader_diagram,
     "bench-shader": block_bench_shader,
     "synth-shader": block_synth_shader,

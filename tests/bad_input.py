@@ -3,7 +3,7 @@
 
 usage: bad_input.py SPECSIM SPECROM SRC WORK
 
-Each row's command (third column, in backticks) runs from an empty directory, with `specsim` / `specrom`
+Each row's command (third column, in backticks) runs from an empty directory, with `specsim` / `specrom` / `setuprom`
 replaced by the built programs and ${SRC} by the repository. It must exit with the code the fourth column
 gives (2), write exactly one line to stderr, starting with the program's name and containing the text in
 backticks in the fourth column, write nothing to stdout (unless the row says "after printing its results")
@@ -22,6 +22,8 @@ ROW = re.compile(r"^\| [^|]+ \| [^|]+ \| `([^`]*)` \| exit ([0-9]+)([^:]*): `([^
 def main():
     specsim, specrom, src, work = (os.path.abspath(a) for a in sys.argv[1:5])
     progs = {"specsim": specsim, "specrom": specrom}
+    if len(sys.argv) > 5:   # the setup's generator
+        progs["setuprom"] = os.path.abspath(sys.argv[5])
     rows = [m for m in (ROW.match(l.rstrip("\n")) for l in open(os.path.join(src, "docs", "bad-input.md"))) if m]
     if len(rows) < 50:
         print("only %d rows found in docs/bad-input.md: did the table's format change?" % len(rows))

@@ -1,29 +1,33 @@
 # Icarus Verilog run of spec_shader (tests/iverilog/tb_spec_shader.v): `specsim setup-vectors` writes span-ends
 # beats and every pixel the bit-exact models give, the testbench drives the shader with random stalls on both
 # sides and exits non-zero ($fatal) on the first mismatch of value, tlast or tuser, a lost or extra pixel, a hang
-# or an output that is X after the one reset pulse. ITERATIVE=1: the small configuration with spec_stream's up5k
-# configuration (SPECROM writes its header and images into WORK/rom); BACKEND=1 (optional): spec_shader's compact
-# back end spec_stream_seq. Runs in WORK with absolute ROM paths.
+# or an output that is X after the one reset pulse. CONFIG ecp5 (default): the multiplier setup with spec_stream;
+# up5k: the small setup with spec_stream_seq and spec_stream's up5k tables (SPECROM writes their header and
+# images into WORK/rom). Runs in WORK with absolute ROM paths.
 file(MAKE_DIRECTORY ${WORK})
 set(INC -I${SRC}/rom)
 set(ROMPARAMS "-Ptb_spec_shader.ROM9_FILE=\"${SRC}/rom/rom9_scale.hex\"" "-Ptb_spec_shader.ROM12_FILE=\"${SRC}/rom/rom12_cosk.hex\"")
-set(VCONFIG pipelined)
-if(ITERATIVE)
+if(NOT DEFINED CONFIG)
+  set(CONFIG ecp5)
+endif()
+if(CONFIG STREQUAL "up5k")
   file(MAKE_DIRECTORY ${WORK}/rom)
   execute_process(COMMAND ${SPECROM} --config up5k --out ${WORK}/rom RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "specrom failed (${rc})")
   endif()
   set(INC -I${WORK}/rom -I${SRC}/rom)
-  set(ROMPARAMS "-Ptb_spec_shader.ITERATIVE=1")
-  set(VCONFIG small)
+  set(ROMPARAMS "-Ptb_spec_shader.ITERATIVE=1" "-Ptb_spec_shader.BACKEND=1"
+                "-Ptb_spec_shader.ROM9_FILE=\"${WORK}/rom/rom9_scale.hex\"" "-Ptb_spec_shader.ROM12_FILE=\"${WORK}/rom/rom12_cosk.hex\"")
 endif()
-if(DEFINED BACKEND)
-  list(APPEND ROMPARAMS "-Ptb_spec_shader.BACKEND=${BACKEND}")
-endif()
-list(APPEND ROMPARAMS "-Ptb_spec_shader.LOG2_FILE=\"${SRC}/rom/setup_log2.hex\""
-                      "-Ptb_spec_shader.EXP2_FILE=\"${SRC}/rom/setup_exp2.hex\"")
-execute_process(COMMAND ${SPECSIM} setup-vectors --out ${WORK}/v --spans ${SPANS} --seed 7 --config ${VCONFIG}
+foreach(p EFU_FILE:setup_efu EXP2_FILE:setup_exp2 UC_FILE:setup_ucode SMALL_LOG2_FILE:setup_small_log2
+          SMALL_EXP2_FILE:setup_small_exp2)
+  string(REPLACE ":" ";" pf ${p})
+  list(GET pf 0 param)
+  list(GET pf 1 file)
+  list(APPEND ROMPARAMS "-Ptb_spec_shader.${param}=\"${SRC}/rom/${file}.hex\"")
+endforeach()
+execute_process(COMMAND ${SPECSIM} setup-vectors --out ${WORK}/v --spans ${SPANS} --seed 7 --config ${CONFIG}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE counts)
 if(NOT rc EQUAL 0 OR NOT counts MATCHES "spans ([0-9]+) pixels ([0-9]+)")
   message(FATAL_ERROR "specsim setup-vectors failed (${rc}): ${counts}")

@@ -2,11 +2,10 @@
 // degenerate span ends (every SpanKind of setup_eval.h, n 0..1023, both gamma rules, and raw bit patterns)
 // through the Verilated RTL against the bit-exact models, bit for bit. Not part of make test.
 //
-// SPEC_LONG_SPANS (default 1000000) spans through spec_setup_pipe (the fully pipelined arithmetic, a span a
-// clock with random bubbles), a tenth of that through spec_setup and spec_shader (pipelined, random stalls on
-// both sides, every pixel, tlast and tuser checked) and a thousandth through the small configuration (one span
-// at a time: thousands of clocks a span, make bench-shader). SPEC_LONG_SEED (default 1) picks the run. Each
-// test prints what it checked.
+// SPEC_LONG_SPANS (default 1000000) spans through each configuration: spec_setup (the multiplier setup, ecp5)
+// and spec_setup_small (the small CORDIC setup, up5k) through their AXI4-Stream ports with random stalls on both
+// sides, and a tenth of that through spec_shader in each configuration (every pixel, tlast and tuser checked).
+// SPEC_LONG_SEED (default 1) picks the run. Each test prints what it checked.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -16,11 +15,12 @@
 #include <random>
 
 #include "Vspec_setup.h"
-#include "Vspec_setup_pipe.h"
+#include "Vspec_setup_small.h"
 #include "Vspec_shader.h"
-#include "Vspec_shader_small.h"
+#include "Vspec_shader_up5k.h"
 #include "cli.h"
 #include "common.h"
+#include "setup_config.h"
 #include "setup_driver.h"
 #include "setup_eval.h"
 
@@ -46,8 +46,9 @@ bool same(const SetupOut& o, const SetupResult& r) {
 }
 
 template <class V>
-void shader_run(const char* name, const Model& core, uint64_t spans, uint32_t max_len, uint64_t seed) {
-    const SetupModel sm;
+void shader_run(const char* name, SetupConfig c, uint64_t spans, uint32_t max_len, uint64_t seed) {
+    const ConfigSetupModel sm(c);
+    const Model core(shader_core_format(c));
     std::mt19937_64 rng(seed);
     ShaderDriver<V> d;
     const double modes[][2] = {{1.0, 1.0}, {0.9, 0.9}, {0.5, 1.0}, {1.0, 0.5}, {0.3, 0.3}, {1.0, 0.1}, {0.97, 0.97}};
@@ -75,75 +76,44 @@ void shader_run(const char* name, const Model& core, uint64_t spans, uint32_t ma
     std::printf("%s: %llu spans, %llu pixels, bit for bit the models (%llu clocks)\n", name,
                 (unsigned long long)done, (unsigned long long)pixels, (unsigned long long)d.cycle());
 }
-}  // namespace
 
-// spec_setup_pipe: a span (or a bubble, 1 in 8) every clock; each descriptor and its flags against the model in order.
-TEST(LongSetup, PipeAgainstModel) {
-    const SetupModel sm;
-    std::mt19937_64 rng(kSeed * 1000 + 11);
-    SetupPipeDriver<Vspec_setup_pipe> d;
-    std::deque<SetupInput> pending;
-    uint64_t sent = 0, checked = 0;
-    auto drain = [&] {
-        for (const SetupOut& o : d.out()) {
-            ASSERT_FALSE(pending.empty()) << "a descriptor nobody sent, after " << checked;
-            const SetupResult r = sm.run(pending.front());
-            ASSERT_TRUE(same(o, r)) << "span " << checked << ": c " << o.regs.c << " / " << r.regs.c << ", zeta0 "
-                                    << o.regs.zeta0 << " / " << r.regs.zeta0 << ", dzeta " << o.regs.dzeta << " / "
-                                    << r.regs.dzeta << ", flags " << o.flags << " / " << r.flags;
-            pending.pop_front();
-            ++checked;
-        }
-        d.out().clear();
-    };
-    while (sent < kSpans) {
-        if (rng() % 8 == 0) {
-            d.push(nullptr);
-        } else {
-            pending.push_back(long_input(rng, sm.format(), 1023));
-            d.push(&pending.back());
-            ++sent;
-        }
-        drain();
-        if (HasFatalFailure()) return;
-    }
-    for (int i = 0; i < 1000 && !pending.empty(); ++i) {
-        d.push(nullptr);
-        drain();
-        if (HasFatalFailure()) return;
-    }
-    ASSERT_TRUE(pending.empty()) << pending.size() << " spans never came out";
-    std::printf("spec_setup_pipe: %llu spans, bit for bit the model\n", (unsigned long long)checked);
-}
-
-// spec_setup (pipelined) through its AXI4-Stream ports with random stalls on both sides.
-TEST(LongSetup, StreamAgainstModel) {
-    const SetupModel sm;
-    std::mt19937_64 rng(kSeed * 1000 + 12);
-    SetupStreamDriver<Vspec_setup> d;
+// A setup through its AXI4-Stream ports with random stalls on both sides.
+template <class V>
+void setup_run(const char* name, SetupConfig c, uint64_t spans, uint64_t seed) {
+    const ConfigSetupModel sm(c);
+    std::mt19937_64 rng(seed);
+    SetupStreamDriver<V> d;
     const double modes[][2] = {{1.0, 1.0}, {0.7, 0.3}, {0.3, 0.9}, {0.97, 0.97}};
     uint64_t done = 0;
-    for (size_t batch = 0; done < kSpans / 10; ++batch) {
+    for (size_t batch = 0; done < spans; ++batch) {
         std::vector<SetupInput> in;
-        for (int i = 0; i < 2000; ++i) in.push_back(long_input(rng, sm.format(), 1023));
+        for (uint64_t i = 0; i < 2000 && done + i < spans; ++i) in.push_back(long_input(rng, sm.format(), 1023));
         const auto& m = modes[batch % 4];
         const std::vector<SetupOut> out = d.run(in, m[0], m[1], rng);
         ASSERT_EQ(out.size(), in.size());
         for (size_t i = 0; i < in.size(); ++i) {
-            ASSERT_TRUE(same(out[i], sm.run(in[i]))) << "span " << done + i;
-            ASSERT_TRUE(out[i].reserved_zero) << "span " << done + i << ": reserved descriptor bits";
+            ASSERT_TRUE(same(out[i], sm.run(in[i]))) << name << ": span " << done + i;
+            ASSERT_TRUE(out[i].reserved_zero) << name << ": span " << done + i << ": reserved descriptor bits";
         }
         done += in.size();
     }
-    std::printf("spec_setup: %llu spans through AXI4-Stream with stalls, bit for bit the model (%llu clocks)\n",
+    std::printf("%s: %llu spans through AXI4-Stream with stalls, bit for bit the model (%llu clocks)\n", name,
                 (unsigned long long)done, (unsigned long long)d.cycle());
 }
+}  // namespace
 
-TEST(LongSetup, ShaderPipelinedAgainstModels) {
-    shader_run<Vspec_shader>("spec_shader (pipelined)", Model(), kSpans / 10, 24, kSeed * 1000 + 13);
+TEST(LongSetup, MultiplierSetupAgainstModel) {
+    setup_run<Vspec_setup>("spec_setup (ecp5)", SetupConfig::ecp5, kSpans, kSeed * 1000 + 12);
 }
 
-TEST(LongSetup, ShaderSmallAgainstModels) {
-    shader_run<Vspec_shader_small>("spec_shader (small)", Model(config_format("up5k")), std::max<uint64_t>(100, kSpans / 1000),
-                                   24, kSeed * 1000 + 14);
+TEST(LongSetup, SmallSetupAgainstModel) {
+    setup_run<Vspec_setup_small>("spec_setup_small (up5k)", SetupConfig::up5k, kSpans, kSeed * 1000 + 15);
+}
+
+TEST(LongSetup, ShaderEcp5AgainstModels) {
+    shader_run<Vspec_shader>("spec_shader (ecp5)", SetupConfig::ecp5, kSpans / 10, 24, kSeed * 1000 + 13);
+}
+
+TEST(LongSetup, ShaderUp5kAgainstModels) {
+    shader_run<Vspec_shader_up5k>("spec_shader (up5k)", SetupConfig::up5k, kSpans / 10, 24, kSeed * 1000 + 14);
 }

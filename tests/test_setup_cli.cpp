@@ -40,7 +40,7 @@ Result run(const std::string& args) {
 
 // A random span's command line (components with 4 decimals, exactly representable steps not needed).
 std::string random_args(std::mt19937_64& rng) {
-    const SetupFormat sf;
+    const SetupFormat sf = setup_format_config("ecp5");
     const SetupInput in = random_case(rng, sf, SpanKind(rng() % unsigned(SpanKind::count)), rng() % 1024, 12);
     std::ostringstream o;
     const int32_t* v[4] = {in.n1, in.n2, in.h1, in.h2};
@@ -59,7 +59,7 @@ TEST(SetupCli, RtlEqualsGoldenCharacterForCharacter) {
     std::mt19937_64 rng(61);
     for (int i = 0; i < 12; ++i) {
         const std::string a = random_args(rng) + (i % 3 == 0 ? " --gamma midpoint" : "");
-        for (const char* cfg : {"pipelined", "small"}) {
+        for (const char* cfg : {"ecp5", "up5k"}) {
             const Result rtl = run(a + " --pixels --config " + cfg);
             const Result gold = run(a + " --pixels --model golden --config " + cfg);
             ASSERT_EQ(rtl.code, 0) << rtl.err;
@@ -105,6 +105,9 @@ TEST(SetupCli, HelpAndLibraryPieces) {
     const Result h = run("--help");
     EXPECT_EQ(h.code, 0);
     EXPECT_NE(h.out.find("--pixels"), std::string::npos);
+    const Result bad = run("--n1 0,0,1 --n2 0,0,1 --h1 0,0,1 --h2 0,0,1 --n 3 --strength 1 --len 2 --config pipelined");
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.err.find("unknown configuration 'pipelined' (ecp5, up5k)"), std::string::npos) << bad.err;
     const std::string flags = "specsim setup --n1 0,0,1 --n2 0,0,1 --h1 0,0.6,0.8 --h2 0,0.6,0.8 --n 3 --strength 1.5 --len 0";
     std::vector<std::string> words;
     std::istringstream is(flags);

@@ -46,12 +46,11 @@ module board_core #(
     parameter MUL_STEPS = 1,
     parameter SQRT_STEPS = 1,
     parameter SHADERS = 1,             // 1: both passes through one shader; 2: one shader per pass
-    parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = small (iCE40), 0 = pipelined
+    parameter SHADER_SMALL = 1,        // spec_shader's configuration: 1 = up5k (the small CORDIC setup), 0 = ecp5 (the multiplier setup)
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
-    parameter LOG2_FILE = "",          // spec_setup's tables
-    parameter EXP2_FILE = ""
+    parameter SETUP_DIR = "rom"        // the setups' tables and microcode (rom/setup_*.hex)
 ) (
     input  wire                  clk,
     input  wire                  rst_n,
@@ -143,8 +142,7 @@ module board_core #(
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(SHADERS), .SMALL(SHADER_SMALL),
         .BACKEND(SHADER_BACKEND),
-        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-        .EXP2_FILE(EXP2_FILE)
+        .SHADE_FILE(SHADE_FILE), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),
@@ -223,6 +221,12 @@ module board_core #(
         end
     end
     wire unused;
-    assign unused = &{1'b0, light_busy, wr_x[X_W-1:LB_AW]};
+    generate
+        if (LB_AW < X_W) begin : g_wr_x_high                           // the line buffer's address is narrower
+            assign unused = &{1'b0, light_busy, wr_x[X_W-1:LB_AW]};
+        end else begin : g_wr_x_all                                    // 1280 wide: every bit addresses the buffer
+            assign unused = &{1'b0, light_busy};
+        end
+    endgenerate
 endmodule
 `default_nettype wire

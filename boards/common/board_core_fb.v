@@ -47,8 +47,7 @@ module board_core_fb #(
     parameter SHADER_BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
-    parameter LOG2_FILE = "",
-    parameter EXP2_FILE = "",
+    parameter SETUP_DIR = "rom",       // the setups' tables and microcode (rom/setup_*.hex)
     // the frame store: 0 = frame_store (16-bit words, nibble write enables: the UP5K's SPRAM), 1 =
     // frame_store_packed (36-bit words of three pixels: the ECP5's block RAM); FIFO_LUTRAM: the queues in
     // distributed RAM (the ECP5-25F's block RAM is the frame store's)
@@ -177,7 +176,7 @@ module board_core_fb #(
     wire [15:0] px_dif, px_spc;
     shade_passes #(
         .N_OBJ(N_OBJ), .OBJ_W(OBJ_W), .X_W(X_W), .SHADERS(1), .SMALL(SHADER_SMALL), .BACKEND(SHADER_BACKEND), .SHADE_FILE(SHADE_FILE), .FIFO_LUTRAM(FIFO_LUTRAM), .FIFO_QUEUE(FIFO_QUEUE), .META_AW(META_AW),
-        .OUT_REG(PASSES_OUT_REG), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+        .OUT_REG(PASSES_OUT_REG), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR)
     ) u_shade (
         .clk(clk), .rst_n(rst_n),
         .s_valid(sp_valid), .s_ready(sp_ready), .s_obj(sp_obj), .s_x0(sp_x0), .s_l(sp_l), .s_n1(sp_n1),

@@ -4,8 +4,10 @@
 // strength (UQ1.15), the length; the span's pixels out (AXI4-Stream, tlast on the last). The gamma rule is the
 // midpoint one: exact for a constant light vector along a slerp of the normal (docs/host.md), which is this
 // case. spec_stream runs its up5k configuration (interpolated 4 x 256 tables) on both boards.
-// SMALL = 1: spec_setup one span at a time (the iCE40 configuration); 0: fully pipelined.
-// BACKEND: spec_shader's back end, 0 = spec_stream, 1 = spec_stream_seq (one span at a time, few flip-flops).
+// SMALL = 1: spec_setup_small, the small CORDIC setup (one span at a time; the up5k configuration's, the
+// frame-buffer designs'); 0: spec_setup, the multiplier setup (a span every II clocks; the ecp5 configuration's,
+// the racing design's). BACKEND: spec_shader's back end, 0 = spec_stream, 1 = spec_stream_seq (one span at a
+// time, few flip-flops). SETUP_DIR: the directory of the setups' tables and microcode (rom/).
 `timescale 1ns / 1ps
 `default_nettype none
 `include "setup_params.vh"
@@ -14,8 +16,7 @@ module board_shader #(
     parameter BACKEND = 0,
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
-    parameter LOG2_FILE = "",
-    parameter EXP2_FILE = ""
+    parameter SETUP_DIR = "rom"
 ) (
     input  wire        clk,
     input  wire        rst_n,
@@ -48,7 +49,9 @@ module board_shader #(
     end
     wire [6:0] flags_unused;
     spec_shader #(
-        .ITERATIVE(SMALL), .BACKEND(BACKEND), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
+        .ITERATIVE(SMALL), .BACKEND(BACKEND), .EFU_FILE({SETUP_DIR, "/setup_efu.hex"}),
+        .EXP2_FILE({SETUP_DIR, "/setup_exp2.hex"}), .UC_FILE({SETUP_DIR, "/setup_ucode.hex"}),
+        .SMALL_LOG2_FILE({SETUP_DIR, "/setup_small_log2.hex"}), .SMALL_EXP2_FILE({SETUP_DIR, "/setup_small_exp2.hex"}),
         .TBL_AW(8), .INTERP(1), .INTERP_FRAC(10), .DELTA_W(10), .SCALE_W(16), .SCALE_FRAC(13),
         .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_shader (

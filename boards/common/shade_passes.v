@@ -25,8 +25,7 @@ module shade_passes #(
     parameter SHADE_FILE = "",
     parameter ROM9_FILE = "",
     parameter ROM12_FILE = "",
-    parameter LOG2_FILE = "",
-    parameter EXP2_FILE = "",
+    parameter SETUP_DIR = "rom",       // the setups' tables and microcode (rom/setup_*.hex)
     parameter FIFO_LUTRAM = 0,         // sync_fifo's LUTRAM: the queues in distributed RAM
     parameter FIFO_QUEUE = 3,          // sync_fifo's QUEUE: its output queue's entries (0, 1 or 3)
     parameter META_AW = 8,             // the sub-spans' queue (object, x0): 2^META_AW + 2 or + 3 entries
@@ -95,7 +94,7 @@ module shade_passes #(
                 else if (in_valid & in_ready) sent_d <= ~sent_d;
             end
             board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_shader (
+                           .SETUP_DIR(SETUP_DIR)) u_shader (
                 .clk(clk), .rst_n(rst_n), .s_valid(in_valid), .s_ready(in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(second ? light_h : light_l), .s_n(second ? k_n : 10'd1),
                 .s_strength(second ? k_ks : k_kd), .s_l(s_l),
@@ -133,13 +132,13 @@ module shade_passes #(
                 end
             end
             board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_diffuse (
+                           .SETUP_DIR(SETUP_DIR)) u_diffuse (
                 .clk(clk), .rst_n(rst_n), .s_valid(d_in_valid), .s_ready(d_in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(light_l), .s_n(10'd1), .s_strength(k_kd), .s_l(s_l),
                 .m_valid(d_out_valid), .m_ready(d_out_ready), .m_data(d_out_data), .m_last(d_out_last)
             );
             board_shader #(.SMALL(SMALL), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-                           .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)) u_specular (
+                           .SETUP_DIR(SETUP_DIR)) u_specular (
                 .clk(clk), .rst_n(rst_n), .s_valid(s_in_valid), .s_ready(s_in_ready), .s_n1(s_n1), .s_n2(s_n2),
                 .s_light(light_h), .s_n(k_n), .s_strength(k_ks), .s_l(s_l),
                 .m_valid(s_out_valid), .m_ready(s_out_ready), .m_data(s_out_data), .m_last(s_out_last)

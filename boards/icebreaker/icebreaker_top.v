@@ -25,8 +25,7 @@ module icebreaker_top #(
     parameter LIGHT_FILE = "boards/common/gen/light_xy.hex",
     parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
     parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex",
-    parameter LOG2_FILE = "rom/setup_log2.hex",
-    parameter EXP2_FILE = "rom/setup_exp2.hex"
+    parameter SETUP_DIR = "rom"        // the setups' tables and microcode (rom/setup_*.hex)
 ) (
     input  wire       CLK,        // 12 MHz
     input  wire       BTN_N,
@@ -70,7 +69,7 @@ module icebreaker_top #(
         .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E),
         .MUL_STEPS(1), .SQRT_STEPS(1), .SPANS_SERIAL(1), .SHADER_SMALL(1), .SHADER_BACKEND(1), .FIFO_QUEUE(0), .META_AW(1), .COMPOSE_STEPS(1),
         .COMPOSE_HOLD(1), .PASSES_OUT_REG(0),
-        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE)
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR)
     ) u_core (
         .clk(clk), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de), .error(error),
         .frame(frame)

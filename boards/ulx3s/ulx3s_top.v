@@ -9,8 +9,9 @@
 //            (frame_store_packed: 320 x 240 RGB444 in 50 of the 56 DP16KD) shown pixel-doubled; the colour's
 //            4 bits a channel go out as 8 (x 17); the light moves with every rendered frame; the light's
 //            table in logic (LIGHT_BRAM = 0: the buffer and the shader take every DP16KD);
-//   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by the pipelined
-//            spec_shader (a span every clock), which does not fit an ECP5-85F (simulation only).
+//   MODE 1, 3: board_core, racing the beam: each line rendered during the line before by two
+//            ecp5 spec_shaders (the multiplier setup, a span every 28 clocks; one per pass, K = 8), which do not
+//            fit an ECP5-25F (simulation only; docs/boards.md).
 //
 // Clock domains (both from one PLL, phase-locked; ulx3s_prims.v):
 //   clk_core the design clock: the whole of the core and the three TMDS encoders; twice the pixel clock at
@@ -28,17 +29,16 @@
 `include "board_params.vh"
 module ulx3s_top #(
     parameter MODE = 0,
-    parameter SPLIT_K = 32,
+    parameter SPLIT_K = 8,
     // boardgen's tables and the core's ROM images (up5k configuration); the flows pass absolute paths
     parameter SCENE_FILE = "boards/common/gen/scene_640x480.hex",
-    parameter SPLIT_FILE = "boards/common/gen/split_32.hex",
+    parameter SPLIT_FILE = "boards/common/gen/split_8.hex",
     parameter OBJ_FILE = "boards/common/gen/objects_640x480.hex",
     parameter SHADE_FILE = "boards/common/gen/shade_640x480.hex",
     parameter LIGHT_FILE = "boards/common/gen/light_xy.hex",
     parameter ROM9_FILE = "build/rom_up5k/rom9_scale.hex",
     parameter ROM12_FILE = "build/rom_up5k/rom12_cosk.hex",
-    parameter LOG2_FILE = "rom/setup_log2.hex",
-    parameter EXP2_FILE = "rom/setup_exp2.hex"
+    parameter SETUP_DIR = "rom"        // the setups' tables and microcode (rom/setup_*.hex)
 ) (
     input  wire       clk_25mhz,
     input  wire [6:0] btn,
@@ -84,7 +84,8 @@ module ulx3s_top #(
                 .BG_RGB(`BOARD_BG_RGB4), .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE),
                 .SPLIT_FILE(SPLIT_FILE), .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .LIGHT_FILE(LIGHT_FILE),
                 .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E), .MUL_STEPS(1), .SQRT_STEPS(1), .SHADER_SMALL(1),
-                .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE), .EXP2_FILE(EXP2_FILE),
+                .SHADER_BACKEND(1),
+                .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR),
                 .STORE_PACKED(1), .FIFO_LUTRAM(1), .LIGHT_BRAM(0)
             ) u_core (
                 .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb4), .hsync(hs), .vsync(vs), .de(de),
@@ -100,9 +101,8 @@ module ulx3s_top #(
                 .N_OBJ(`BOARD_N_OBJ), .SPLIT_K(SPLIT_K), .SCENE_FILE(SCENE_FILE), .SPLIT_FILE(SPLIT_FILE),
                 .OBJ_FILE(OBJ_FILE), .SHADE_FILE(SHADE_FILE), .LIGHT_FILE(LIGHT_FILE),
                 .COS_E(`BOARD_COS_E), .COS_HALF_E(`BOARD_COS_HALF_E),
-                .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS((MODE == 1) ? 2 : 1),
-                .SHADER_SMALL(0), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-                .EXP2_FILE(EXP2_FILE)
+                .MUL_STEPS(9), .SQRT_STEPS((MODE == 1) ? 2 : 7), .SHADERS(2),
+                .SHADER_SMALL(0), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .SETUP_DIR(SETUP_DIR)
             ) u_core (
                 .clk(clk_core), .rst_n(rst_n), .pix_ce(pix_ce), .rgb(rgb), .hsync(hs), .vsync(vs), .de(de),
                 .late(late), .frame(frame)

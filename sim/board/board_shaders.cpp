@@ -3,7 +3,6 @@
 
 #include <memory>
 
-#include "setup_model.h"
 
 namespace spec {
 namespace board {
@@ -19,25 +18,39 @@ Shader host_shader(const Model& m, host::GammaRule rule) {
     };
 }
 
-Shader rtl_shader(const Model& m, const SetupFormat& sf) {
-    // the setup's descriptor is the default core format's (the board RTL's spec_setup reads rom/spec_params.vh)
-    const auto setup = std::make_shared<const SetupModel>(sf);
-    return [&m, setup](const ShadeIn& in) {
-        SetupInput si;
-        for (int k = 0; k < 3; ++k) {
-            si.n1[k] = in.n1[size_t(k)];
-            si.n2[k] = in.n2[size_t(k)];
-            si.h1[k] = si.h2[k] = in.light[size_t(k)];
-        }
-        si.strength = in.strength;
-        si.n = in.n;
-        si.l = in.l;
-        si.midpoint = true;
-        return m.span(setup->run(si).regs);
-    };
+SetupInput shade_beat(const ShadeIn& in) {
+    SetupInput si;
+    for (int k = 0; k < 3; ++k) {
+        si.n1[k] = in.n1[size_t(k)];
+        si.n2[k] = in.n2[size_t(k)];
+        si.h1[k] = si.h2[k] = in.light[size_t(k)];
+    }
+    si.strength = in.strength;
+    si.n = in.n;
+    si.l = in.l;
+    si.midpoint = true;
+    return si;
 }
 
-const char* board_setup_config(const std::string& board) { return board == "icebreaker" ? "narrow" : "default"; }
+Shader rtl_shader(const Model& m, SetupConfig c) {
+    // the setup's descriptor is the default core format's (the board RTL's setup reads rom/spec_params.vh)
+    const auto setup = std::make_shared<const ConfigSetupModel>(c);
+    return [&m, setup](const ShadeIn& in) { return m.span(setup->run(shade_beat(in)).regs); };
+}
+
+SetupConfig board_setup_config(const std::string& board, const std::string& mode) {
+    return (board == "ulx3s" && (mode == "1280x720" || mode == "128x96-race")) ? SetupConfig::ecp5 : SetupConfig::up5k;
+}
+
+std::vector<SetupInput> board_beats(const BoardScene& s, unsigned f) {
+    std::vector<SetupInput> beats;
+    const Shader record = [&beats](const ShadeIn& in) {
+        beats.push_back(shade_beat(in));
+        return std::vector<uint32_t>(size_t(in.l) + 1, 0u);
+    };
+    model_frame(s, record, f, 8, 0, s.mode.v_active);
+    return beats;
+}
 
 }  // namespace board
 }  // namespace spec

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "board_model.h"
-#include "setup_format.h"
+#include "setup_config.h"
 #include "span_host.h"
 #include "spec_model.h"
 
@@ -16,14 +16,24 @@ namespace board {
 // fixed-point one); used to measure how much of the error is the split and how much the setup.
 Shader host_shader(const Model& m, host::GammaRule rule);
 
-// The RTL's shader pass (boards/common/board_shader.v: spec_shader), bit for bit: spec_setup's model
-// (sim/setup/setup_model.h) in the setup format sf with the midpoint gamma rule, then the core's model m on
-// its registers. m and the model of sf live as long as the shader.
-Shader rtl_shader(const Model& m, const SetupFormat& sf = SetupFormat());
+// The span-ends beat boards/common/board_shader.v makes of a shader pass: N1, N2, the light vector as H1 and H2,
+// the midpoint gamma rule.
+SetupInput shade_beat(const ShadeIn& in);
 
-// The setup format a board's RTL is built with (boards/boards.cmake, boards/flow.py): "narrow" on the
-// iCEBreaker (4 bits a channel; docs/boards.md), "default" on the ULX3S.
-const char* board_setup_config(const std::string& board);
+// The RTL's shader pass (boards/common/board_shader.v: spec_shader), bit for bit: the setup model of
+// configuration c (sim/setup/setup_config.h) on shade_beat, then the core's model m on its registers. m must
+// live as long as the shader.
+Shader rtl_shader(const Model& m, SetupConfig c);
+
+// The setup configuration a board design is built with (boards/boards.cmake, boards/flow.py): up5k where the
+// design draws into a frame buffer (the iCEBreaker; the ULX3S at 640 x 480 and its 128 x 96 test raster: the
+// multiplier setup does not fit beside the buffer, docs/boards.md), ecp5 where it races the beam (the ULX3S at
+// 1280 x 720 and its 128x96-race test raster).
+SetupConfig board_setup_config(const std::string& board, const std::string& mode);
+
+// The beats a board's shader gets for frame f of scene s, in the order the design sends them (the diffuse and
+// the specular pass of each sub-span, line by line).
+std::vector<SetupInput> board_beats(const BoardScene& s, unsigned f);
 
 }  // namespace board
 }  // namespace spec

@@ -81,9 +81,9 @@ RunOptions parse_run(int argc, char** argv) {
     if (race_test && o.board != "ulx3s") throw UsageError("run: 128x96-race is a ulx3s mode");
     video_mode(race_test ? "128x96" : o.mode);   // throws for an unknown mode
     if (o.board == "icebreaker" && o.mode == "1280x720") throw UsageError("run: the icebreaker design has no 1280x720 mode");
-    // the frame buffer designs (the iCEBreaker, the ULX3S at 640x480 and 128x96) split chords at 8 points,
-    // racing the beam (the ULX3S at 1280x720 and 128x96-race) at 32
-    o.split_k = (o.board == "ulx3s" && (o.mode == "1280x720" || race_test)) ? 32 : 8;
+    // every design splits chords at 8 points: racing the beam (the ULX3S at 1280x720 and 128x96-race) too, where
+    // the multiplier setup's II and latency leave room in a line's clocks for 8's sub-spans (docs/boards.md)
+    o.split_k = 8;
     return o;
 }
 

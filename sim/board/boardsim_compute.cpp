@@ -55,7 +55,7 @@ RunReport run_board_sim(const RunOptions& o) {
     const BoardScene fb_scene = fb ? make_board_scene(o.mode == "128x96" ? "64x48" : "320x240", o.split_k) : scene;
     rep.mode = scene.mode;
     rep.out_bits = fb ? 4 : 8;
-    rep.setup_config = board_setup_config(o.board);
+    rep.setup_config = setup_config_name(board_setup_config(o.board, o.mode));
 
     HarnessOptions ho;
     ho.board = o.board;
@@ -113,7 +113,7 @@ RunReport run_board_sim(const RunOptions& o) {
     }
     const BoardScene& drawn = rep.harness.frame_buffer ? fb_scene : scene;
     const int scale = rep.harness.frame_buffer ? 2 : 1;
-    const Shader shader = rtl_shader(core_model(), setup_format_config(rep.setup_config));
+    const Shader shader = rtl_shader(core_model(), board_setup_config(o.board, o.mode));
     for (int f = 0; f < o.frames; ++f) {
         FrameReport fr;
         fr.frame = unsigned(f);
@@ -151,7 +151,8 @@ std::vector<SplitRow> split_study(const SplitOptions& o) {
     const Model& m = core_model();
     for (int k : o.ks) {
         const BoardScene s = make_board_scene(o.mode, k);
-        const Shader sh = (o.shader == "rtl") ? rtl_shader(m) : host_shader(m, host::GammaRule::midpoint);
+        // rtl: the racing design's setup (ecp5), whose split K the study chooses
+        const Shader sh = (o.shader == "rtl") ? rtl_shader(m, SetupConfig::ecp5) : host_shader(m, host::GammaRule::midpoint);
         SplitRow row;
         row.k = k;
         row.max_err.assign(s.spheres.size(), 0);

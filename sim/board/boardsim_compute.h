@@ -28,7 +28,7 @@ struct RunReport {
     RunOptions opt;
     VideoMode mode;
     int out_bits = 8;
-    std::string setup_config;   // the setup format of the board's RTL and of its model (board_setup_config)
+    std::string setup_config;   // the setup configuration of the board's RTL and of its model (board_setup_config)
     HarnessResult harness;
     MeasuredTiming measured;
     TimingCheck timing;

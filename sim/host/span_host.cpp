@@ -98,7 +98,21 @@ Vec carry_to_n1(const Vec& n1, const Vec& n2, const Vec& h2, bool* opposite) {
     return h2 * std::cos(psi) - glm::cross(u, h2) * std::sin(psi) + u * (glm::dot(u, h2) * (1.0 - std::cos(psi)));
 }
 
-SpanSetup setup_span(const Model& m, const SpanEnds& e, double strength, unsigned n, uint32_t l, GammaRule rule) {
+bool midpoint_fit(double c1, double f1, double fm, double* gamma, double* a_sin, bool checked) {
+    if (!(fm > (checked ? 1e-3 : 0.0))) return false;
+    const double r = (c1 + f1) / (2.0 * fm);
+    if (!(r >= 0.0 && r <= 1.0)) return false;
+    const double g = 2.0 * std::acos(r);
+    if (!(g >= (checked ? 1e-6 : 1e-300)) || !(std::sin(g) > 0.0)) return false;
+    const double as = (f1 - c1 * std::cos(g)) / std::sin(g);
+    if (checked && !(std::hypot(c1, as) <= 1.0)) return false;  // a unit N.H never exceeds 1
+    *gamma = g;
+    *a_sin = as;
+    return true;
+}
+
+SpanSetup setup_span(const Model& m, const SpanEnds& e, double strength, unsigned n, uint32_t l, GammaRule rule,
+                     bool midpoint_checked) {
     const Format& f = m.format();
     if (n >= (1u << f.n_w)) throw std::invalid_argument("n = " + std::to_string(n) + " does not fit register 4");
     if (uint64_t(l) >= (uint64_t(1) << f.l_w)) {
@@ -144,19 +158,9 @@ SpanSetup setup_span(const Model& m, const SpanEnds& e, double strength, unsigne
         if (rule == GammaRule::midpoint) {
             // f(t) = A cos(t*gamma - lambda) gives f(0) + f(1) = 2 cos(gamma/2) f(1/2)
             const double fm = glm::dot(slerp(n1, n2, 0.5), slerp(h1, h2, 0.5));
-            const double f1 = s.cos_t2;  // N2.H2 = N1.H2' (a rotation keeps dot products)
-            const double r = (s.cos_t1 + f1) / (2.0 * fm);
-            bool ok = fm > 1e-3 && r >= 0.0 && r <= 1.0;
+            // N2.H2 = N1.H2' (a rotation keeps dot products)
             double g = 0, as = 0;
-            if (ok) {
-                g = 2.0 * std::acos(r);
-                ok = g >= 1e-6;
-                if (ok) {
-                    as = (f1 - s.cos_t1 * std::cos(g)) / std::sin(g);
-                    ok = std::hypot(s.cos_t1, as) <= 1.0;  // a unit N.H never exceeds 1
-                }
-            }
-            if (ok) {
+            if (midpoint_fit(s.cos_t1, s.cos_t2, fm, &g, &as, midpoint_checked)) {
                 s.gamma = g;
                 a_sin = as;
             } else {

@@ -87,8 +87,16 @@ struct Counters {
 // The register contents for one span. strength = Is*ks (>= 0). n: 0..2^n_w-1, l: 0..2^l_w-1.
 // Throws std::invalid_argument (one-line message) on a non-finite or zero-length vector, a negative or
 // non-finite strength, or n / l outside the core's formats.
+// midpoint_checked = false (for the accuracy checks' knife edges only): GammaRule::midpoint keeps its fit
+// wherever it can be computed, amplitude above 1 and the thresholds of midpoint_fit() included.
 SpanSetup setup_span(const Model& m, const SpanEnds& e, double strength, unsigned n, uint32_t l,
-                     GammaRule rule = GammaRule::patent);
+                     GammaRule rule = GammaRule::patent, bool midpoint_checked = true);
+
+// GammaRule::midpoint's fit of A cos(t gamma - lambda) through c1 = N1.H1 (t = 0), f1 = N2.H2 (t = 1) and
+// fm = N.H at the span's middle (t = 1/2): gamma and A sin(lambda). False where the fit is not a sinusoid of
+// amplitude <= 1 (fm <= 1e-3, (c1 + f1) / (2 fm) outside [0, 1], gamma < 1e-6 or A > 1): the rule then falls
+// back to the patent's gamma. checked = false accepts every fit it can compute (fm > 0, 0 < gamma <= pi).
+bool midpoint_fit(double c1, double f1, double fm, double* gamma, double* a_sin, bool checked = true);
 
 // Spherical interpolation of unit vectors: a at t = 0, b at t = 1, along the shorter great circle;
 // for b = -a along the great circle through perpendicular(a).

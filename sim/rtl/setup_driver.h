@@ -1,6 +1,6 @@
-// setup_driver.h - the span-ends beat of spec_setup / spec_shader (docs/setup.md) packed in C++, and a
-// driver for the Verilated spec_setup_pipe (the fully pipelined arithmetic, no handshake), spec_setup and
-// spec_shader (AXI4-Stream, random stalls), all on the one Verilated-harness template (harness.h).
+// setup_driver.h - the span-ends beat of spec_setup / spec_shader (docs/setup.md) packed in C++, and drivers for
+// the Verilated spec_setup, spec_setup_small and spec_shader (AXI4-Stream, random stalls), all on the one
+// Verilated-harness template (harness.h).
 #pragma once
 
 #include <cstdint>
@@ -76,55 +76,7 @@ struct SetupOut {
     bool reserved_zero = true;   // the descriptor's bits outside its fields are 0
 };
 
-// Drives Vspec_setup_pipe: one span per call of push (or a bubble), outputs collected in order.
-template <class V>
-class SetupPipeDriver {
-public:
-    SetupPipeDriver() : h_(active_high<V>([](V& v) -> CData& { return v.rst; })) {
-        h_->in_valid = 0;
-        h_.reset();
-    }
-    V& top() { return h_.top(); }
-    // One clock with the span (or none) at the input.
-    void push(const SetupInput* in) {
-        top_->in_valid = in != nullptr;
-        if (in) {
-            uint32_t w[setup_params::BEAT_W / 32];
-            pack_setup_beat(*in, w);
-            uint32_t vec[(12 * setup_params::VEC_W + 31) / 32] = {};
-            for (int k = 0; k < 12; ++k)
-                put_bits(vec, setup_params::VEC_W * k, setup_params::VEC_W,
-                         get_bits(w, setup_params::BEAT_VEC_LSB + 16 * k, setup_params::VEC_W));
-            for (int i = 0; i < (12 * setup_params::VEC_W + 31) / 32; ++i) top_->in_vec[i] = vec[i];
-            top_->in_str = in->strength;
-            top_->in_n = in->n;
-            top_->in_l = in->l;
-            top_->in_rule = in->midpoint;
-        }
-        step();
-    }
-    std::vector<SetupOut>& out() { return out_; }
-
-private:
-    void step() {
-        h_.tick();
-        if (top_->out_valid) {
-            SetupOut o;
-            o.regs.c = top_->out_c;
-            o.regs.n = top_->out_n;
-            o.regs.len = top_->out_l;
-            o.regs.zeta0 = static_cast<int32_t>(top_->out_zeta0);
-            o.regs.dzeta = static_cast<int32_t>(top_->out_dzeta);
-            o.flags = top_->out_flags;
-            out_.push_back(o);
-        }
-    }
-    Harness<V> h_;
-    V* const top_ = &h_.top();
-    std::vector<SetupOut> out_;
-};
-
-// Drives a Verilated spec_setup (either configuration) through its AXI4-Stream ports with random stalls on
+// Drives a Verilated spec_setup or spec_setup_small through its AXI4-Stream ports with random stalls on
 // both sides (per-cycle probabilities that the source offers a beat and that the sink is ready).
 template <class V>
 class SetupStreamDriver {

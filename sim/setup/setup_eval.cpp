@@ -151,11 +151,61 @@ SpanCheck check_span(const Model& core, const SetupFormat& sf, const SetupInput&
                 }
             }
         }
+        // the midpoint rule's tests (midpoint_fit: fm > 1e-3, 0 <= r <= 1, gamma >= 1e-6, A <= 1) decided
+        // within the backward error: N1.H1, N2.H2 and N.H each move by up to 2 eps when the vectors turn by
+        // eps; where a corner of that box decides the other way, the span is held to either answer (the
+        // fit kept, or the patent's gamma). Found at A = 1 + 5e-7, which random tilts of eps rarely cross.
+        if (rule == host::GammaRule::midpoint && !(s.flags & host::kFlat)) {
+            const Vec n1u = glm::normalize(e.n1), n2u = glm::normalize(e.n2);
+            const double fm = glm::dot(host::slerp(n1u, n2u, 0.5),
+                                       host::slerp(glm::normalize(e.h1), glm::normalize(e.h2), 0.5));
+            const bool ok = !(s.flags & host::kGammaFallback);
+            const double d = 2.0 * opt.eps;
+            bool edge = false;
+            for (int k = 0; k < 8 && !edge; ++k) {
+                double g, as;
+                edge = host::midpoint_fit(s.cos_t1 + (k & 1 ? d : -d), s.cos_t2 + (k & 2 ? d : -d),
+                                          fm + (k & 4 ? d : -d), &g, &as) != ok;
+            }
+            if (edge) {
+                c.ambiguous = true;
+                const host::SpanSetup alt[2] = {host::setup_span(core, e, str, in.n, in.l, host::GammaRule::patent),
+                                                host::setup_span(core, e, str, in.n, in.l, rule, false)};
+                for (const host::SpanSetup& sp : alt) {
+                    const std::vector<Bound> bp = bounds(core, sp, opt);
+                    for (size_t i = 0; i < b.size(); ++i) {
+                        wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                    }
+                }
+            }
+        }
+        const Vec n1u = glm::normalize(e.n1), n2u = glm::normalize(e.n2);
+        const double opp_gap = 2.0 * std::asin(std::min(1.0, glm::length(n1u + n2u) / 2.0));
+        // N2 near -N1 (within 1/64 rad): the axis N1 x N2 turns by eps / sin(opp_gap) when N2 turns by eps, so
+        // random tilts cover its directions poorly; widened over N2 (and N1) tilted by eps in 16 directions
+        // around it (a setup whose cross product in f-bit coordinates errs by 2^-f is inside this backward
+        // error; found in the up5k configuration, N2 1e-4 rad from -N1)
+        if (opp_gap < 1.0 / 64) {
+            for (int which = 0; which < 2; ++which) {
+                const Vec v = which ? n1u : n2u;
+                const double ax = std::fabs(v.x), ay = std::fabs(v.y), az = std::fabs(v.z);
+                const Vec ek = (ax <= ay && ax <= az) ? Vec(1, 0, 0) : (ay <= az ? Vec(0, 1, 0) : Vec(0, 0, 1));
+                const Vec a = glm::normalize(glm::cross(v, ek)), bb = glm::cross(v, a);
+                for (int k = 0; k < 16; ++k) {
+                    const double phi = 3.14159265358979323846 * k / 8.0;
+                    const Vec vt = v * std::cos(opt.eps) + (a * std::cos(phi) + bb * std::sin(phi)) * std::sin(opt.eps);
+                    const host::SpanEnds p{which ? vt : e.n1, which ? e.n2 : vt, e.h1, e.h2};
+                    const host::SpanSetup sp = host::setup_span(core, p, str, in.n, in.l, rule);
+                    const std::vector<Bound> bp = bounds(core, sp, opt);
+                    for (size_t i = 0; i < b.size(); ++i) {
+                        wide[i] = std::max(wide[i], bp[i].bound + std::fabs(bp[i].ref - b[i].ref));
+                    }
+                }
+            }
+        }
         // N2 within the input's resolution of -N1: the axis of the rotation N2 -> N1 is the input rounding's
         // choice (the host takes it from the last bits' residue, the setup from perpendicular(N1) below its
         // threshold); widened over 32 axes u perpendicular to N1, N2 moved to N1 turned by pi - pi_gap about u
-        const Vec n1u = glm::normalize(e.n1), n2u = glm::normalize(e.n2);
-        const double opp_gap = 2.0 * std::asin(std::min(1.0, glm::length(n1u + n2u) / 2.0));
         if ((s.flags & host::kOpposite) && opp_gap < opt.pi_gap) {
             c.ambiguous = true;
             const double ax = std::fabs(n1u.x), ay = std::fabs(n1u.y), az = std::fabs(n1u.z);

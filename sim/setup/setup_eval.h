@@ -9,12 +9,16 @@
 // Some spans are ill-conditioned: the host's split of N.H = A cos(t gamma - lambda) into C = Is A^n and the
 // angles depends on the end vectors' last bits (gamma below the input's resolution, nearly opposite normals,
 // H2' nearly opposite H1). For those the bound is widened by what the host itself gives for end vectors moved
-// by `eps` (2^-20 rad, a sixteenth of the input format's resolution) in random directions, and for H1 moved
-// by eps toward and away from N1 and across (where H2' is within eps of -H1 every great circle joins them):
+// by `eps` (2^-20 rad, a sixty-fourth of the input format's resolution) in random directions, for H1 moved
+// by eps toward and away from N1 and across (where H2' is within eps of -H1 every great circle joins them),
+// and, where N2 is within 1/64 rad of -N1, for N2 and N1 each tilted by eps in 16 directions (the rotation's
+// axis turns by eps / sin(angle to opposite) there, which random tilts cover poorly):
 // the setup is then held to "the host's answer for nearly the same span" (backward error eps). Each check
 // reports whether the widened bound was needed. Where gamma is within the input's resolution (2^-14) of pi the
 // great circle from H1 to H2' ~ -H1 is the input rounding's choice, and where N2 is that close to -N1 the axis
 // of the rotation N2 -> N1 is: the bound is widened over all of them (33 circles, 32 axes).
+// Under the midpoint rule, where moving N1.H1, N2.H2 and N.H by 2 eps changes the rule's decision (fit or
+// fallback, e.g. an amplitude within rounding of 1), the bound is widened over both answers.
 #pragma once
 
 #include <cstdint>

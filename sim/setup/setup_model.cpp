@@ -1,250 +1,138 @@
 #include "setup_model.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace spec {
 
 namespace {
-constexpr int X = 0, Y = 1, Z = 2;
+constexpr double kPi = 3.14159265358979323846;
 }
 
 SetupModel::SetupModel(const SetupFormat& sf, const Format& core)
-    : sf_(sf), cf_(core), k_(setup_consts(sf)), log2_(make_setup_log2(sf)), exp2_(make_setup_exp2(sf)) {
+    : sf_(sf), cf_(core), prog_(build_setup_program(sf)), tab_(make_setup_tables(sf)) {
     core.validate();
+    sf.validate();
     if (sf.zf < core.ang_frac + 1) throw std::invalid_argument("setup format: zf must exceed the core's ang_frac");
-    // the RTL's (spec_setup_backend) needs, which the model's arithmetic alone would not
-    if (sf.ef <= core.c_w) throw std::invalid_argument("setup format: ef must exceed the core's C width");
-    if (sf.tb + sf.rb > sf.f) throw std::invalid_argument("setup format: tb + rb must be at most f");
+    if (sf.exp_f <= core.c_w) throw std::invalid_argument("setup format: exp_f must exceed the core's C width");
 }
 
-void SetupModel::check(int64_t v, int bits, const char* what) const {
-    const int64_t lim = int64_t(1) << (bits - 1);
-    if (v < -lim || v >= lim) throw std::logic_error(std::string("setup model: ") + what + " leaves its " +
-                                                     std::to_string(bits) + "-bit width");
-}
-
-bool SetupModel::prescale(const int32_t q[3], Vec* v) const {
-    int32_t m = 0;
-    for (int k = 0; k < 3; ++k) m = std::max(m, q[k] < 0 ? -q[k] : q[k]);
-    if (m == 0) return false;
-    int e = 0;
-    while ((int64_t(2) << e) <= m) ++e;   // 2^e <= m < 2^(e+1)
-    const int s = sf_.f - 1 - e;           // >= f - vec_w >= 0
-    for (int k = 0; k < 3; ++k) v->c[k] = int64_t(q[k]) * (int64_t(1) << s);
-    return true;
-}
-
-int64_t SetupModel::gain_mul(int64_t t, bool halve) const {
-    int64_t s = 0;
-    for (const GainTerm& g : halve ? k_.half_terms : k_.gain_terms) {
-        const int64_t term = g.shift >= 0 ? (t >> g.shift) : t * (int64_t(1) << -g.shift);
-        s += g.sign * term;
-    }
-    return s;
-}
-
-void SetupModel::pass(std::vector<Vec*> lanes, int pa, int pb, bool halve) const {
-    const int pt = 3 - pa - pb;
-    const int w = sf_.w();
-    Vec* d = lanes[0];
-    if (halve) {   // the pair to half its length first (the third coordinate is multiplied by G/2 below)
-        for (Vec* v : lanes) {
-            v->c[pa] = (v->c[pa] + 1) >> 1;
-            v->c[pb] = (v->c[pb] + 1) >> 1;
+bool SetupModel::beat(const SetupInput& in, SetupBeat* b) const {
+    const int32_t* src[4] = {in.n1, in.n2, in.h1, in.h2};
+    bool valid = true;
+    for (int v = 0; v < 4; ++v) {
+        bool z = true;
+        for (int k = 0; k < 3; ++k) {   // the component's vec_w bits, sign-extended
+            const int32_t c = static_cast<int32_t>(static_cast<uint32_t>(src[v][k]) << (32 - sf_.vec_w)) >> (32 - sf_.vec_w);
+            b->v[v][k] = c;
+            z &= c == 0;
         }
+        valid &= !z;
     }
-    if (d->c[pa] < 0) {   // a rotation by pi first: the driver's pair into the half-plane a >= 0
-        for (Vec* v : lanes) {
-            v->c[pa] = -v->c[pa];
-            v->c[pb] = -v->c[pb];
-        }
+    // PN = N1 x e_k, e_k the axis of N1's smallest |component| (the first of x, y, z): the host's perpendicular
+    const int32_t* n1 = b->v[BV_N1];
+    const int32_t ax = std::abs(n1[0]), ay = std::abs(n1[1]), az = std::abs(n1[2]);
+    int32_t* pn = b->v[BV_PN];
+    if (ax <= ay && ax <= az) {
+        pn[0] = 0, pn[1] = n1[2], pn[2] = -n1[1];
+    } else if (ay <= az) {
+        pn[0] = -n1[2], pn[1] = 0, pn[2] = n1[0];
+    } else {
+        pn[0] = n1[1], pn[1] = -n1[0], pn[2] = 0;
     }
-    for (int i = 0; i < sf_.iters; ++i) {
-        const bool pos = d->c[pb] >= 0;   // rotate by -atan(2^-i) when b >= 0, else by +atan(2^-i)
-        for (Vec* v : lanes) {
-            const int64_t a = v->c[pa], b = v->c[pb];
-            v->c[pa] = pos ? a + (b >> i) : a - (b >> i);
-            v->c[pb] = pos ? b - (a >> i) : b + (a >> i);
-            check(v->c[pa], w, "a coordinate");
-            check(v->c[pb], w, "a coordinate");
-        }
-    }
-    for (Vec* v : lanes) {
-        v->c[pt] = gain_mul(v->c[pt], halve);
-        check(v->c[pt], w, "a third coordinate");
-    }
+    b->s[BS_RULE] = in.midpoint ? 1 : 0;
+    b->s[BS_STRENGTH] = static_cast<int32_t>(in.strength & ((1u << sf_.str_w) - 1));
+    b->s[BS_N] = static_cast<int32_t>(in.n & ((1u << cf_.n_w) - 1));
+    b->s[BS_L] = static_cast<int32_t>(in.l & ((1u << cf_.l_w) - 1));
+    return valid;
 }
 
-void SetupModel::vector_angle(int64_t a, int64_t b, int64_t* angle, int64_t* mag) const {
-    int64_t z = 0;
-    if (a < 0) {   // a quarter turn first: the pair into the half-plane a >= 0
-        if (b >= 0) {
-            const int64_t t = a;
-            a = b;
-            b = -t;
-            z = k_.half_pi;
-        } else {
-            const int64_t t = a;
-            a = -b;
-            b = t;
-            z = -k_.half_pi;
-        }
-    }
-    for (int i = 0; i < sf_.iters; ++i) {
-        const int64_t na = b >= 0 ? a + (b >> i) : a - (b >> i);
-        const int64_t nb = b >= 0 ? b - (a >> i) : b + (a >> i);
-        z += b >= 0 ? k_.atan[i] : -k_.atan[i];
-        a = na;
-        b = nb;
-        check(a, sf_.w(), "a vectoring coordinate");
-        check(b, sf_.w(), "a vectoring coordinate");
-    }
-    check(z, sf_.zw(), "an angle");
-    *angle = z;
-    *mag = a;
+int64_t SetupModel::fix(const Fp& x, int frac, int sat) const {
+    if (x.zero()) return 0;
+    const int64_t top = (int64_t(1) << (sat + frac)) - 1;
+    const int sh = x.e - (sf_.fp.m - 1) + frac;   // left shift of the mantissa
+    int64_t mag;
+    if (x.e >= sat) mag = top;
+    else if (sh >= 0) mag = static_cast<int64_t>(x.m) << sh;
+    else if (-sh > 62) mag = 0;
+    else mag = static_cast<int64_t>((x.m + (uint64_t(1) << (-sh - 1))) >> -sh);
+    mag = std::min(mag, top);
+    return x.s ? -mag : mag;
 }
 
-int64_t SetupModel::log2_fixed(uint64_t x) const {
-    if (x == 0 || (x >> 48) != 0) throw std::logic_error("setup model: log2 of an out-of-range value");
-    int e = 63;
-    while (!((x >> e) & 1)) --e;
-    const int fb = sf_.tb + sf_.rb;
-    const uint64_t mask = (uint64_t(1) << fb) - 1;
-    const uint64_t frac = (e >= fb ? (x >> (e - fb)) : (x << (fb - e))) & mask;   // bits below the leading one
-    const uint64_t j = frac >> sf_.rb, r = frac & ((uint64_t(1) << sf_.rb) - 1);
-    const int64_t t0 = static_cast<int64_t>(log2_[j]), t1 = static_cast<int64_t>(log2_[j + 1]);
-    const int64_t interp = ((t1 - t0) * static_cast<int64_t>(r) + (int64_t(1) << (sf_.rb - 1))) >> sf_.rb;
-    return (int64_t(e) << sf_.lf) + t0 + interp;
-}
-
-int64_t SetupModel::exp2_frac(int64_t p) const {
-    const int64_t j = p >> (sf_.lf - sf_.tb);
-    const int64_t r = (p >> (sf_.lf - sf_.tb - sf_.rb)) & ((int64_t(1) << sf_.rb) - 1);
-    const int64_t e0 = static_cast<int64_t>(exp2_[j]), e1 = static_cast<int64_t>(exp2_[j + 1]);
-    return e0 - (((e0 - e1) * r + (int64_t(1) << (sf_.rb - 1))) >> sf_.rb);
-}
-
-uint32_t SetupModel::c_code(int64_t p) const {
-    const int64_t pi = p >> sf_.lf;
-    const int shift = sf_.ef - cf_.c_w + static_cast<int>(pi);   // >= ef - c_w
+uint32_t SetupModel::c_code(const Fp& p) const {
+    if (p.e >= 6) return 0;   // p >= 64: C < 2^-64
+    const int64_t q = fix(p, sf_.lf, 6);
+    const int64_t pi = q >> sf_.lf;
     if (pi > cf_.c_w + 1) return 0;
-    const int64_t e = exp2_frac(p & ((int64_t(1) << sf_.lf) - 1));
-    const int64_t code = shift > 0 ? (e + (int64_t(1) << (shift - 1))) >> shift : e << -shift;
-    const int64_t top = (int64_t(1) << cf_.c_w) - 1;
-    return static_cast<uint32_t>(std::min(code, top));
+    const int64_t fr = q & ((int64_t(1) << sf_.lf) - 1);
+    const int64_t e = tab_.exp2.at(static_cast<uint64_t>(fr >> (sf_.lf - sf_.exp_t - sf_.exp_r)));   // 2^-f
+    const int shift = sf_.exp_f - cf_.c_w + static_cast<int>(pi);   // >= 1
+    const int64_t code = (e + (int64_t(1) << (shift - 1))) >> shift;
+    return static_cast<uint32_t>(std::min<int64_t>(code, (int64_t(1) << cf_.c_w) - 1));
 }
 
-int64_t SetupModel::divide(int64_t gamma_z, uint32_t l) const {
-    const int s = sf_.zf - cf_.ang_frac;
-    const int64_t d = int64_t(l) << s;
-    return (gamma_z + (d >> 1)) / d;
+SetupResult SetupModel::finish(const SetupInput& in, bool valid, const std::array<Fp, SO_COUNT>& o) const {
+    SetupResult res;
+    const FpFmt& f = sf_.fp;
+    const uint32_t n = in.n & ((1u << cf_.n_w) - 1), l = in.l & ((1u << cf_.l_w) - 1);
+    res.regs.n = n;
+    res.regs.len = l;
+    for (int k = 0; k < SO_COUNT; ++k) res.trace.out[k] = fp_value(f, o[k]);
+    if (l == 0) res.flags |= kSetupSinglePixel;
+    if (!valid) {
+        res.flags |= kSetupInvalid;
+        return res;   // C = 0, zeta0 = dzeta = 0
+    }
+    const bool flat = l == 0 || fp_less(o[SO_GAMMA_P], fp_from_double(f, std::ldexp(1.0, sf_.flat_log2)));
+    res.trace.flat = flat;
+    if (fp_less(o[SO_OPC], fp_from_double(f, sf_.opp_eps))) res.flags |= kSetupOpposite;
+    bool nohl;
+    Fp p;
+    if (flat) {
+        res.flags |= kSetupFlat;
+        nohl = n > 0 && (o[SO_C1].zero() || o[SO_C1].s);
+        p = o[SO_P_F];
+    } else {
+        if (in.midpoint && o[SO_OK].zero()) res.flags |= kSetupGammaFallback;
+        const int zf = sf_.zf;
+        const int64_t pi = std::llround(std::ldexp(kPi, zf)), two_pi = std::llround(std::ldexp(2 * kPi, zf));
+        const int64_t hp = std::llround(std::ldexp(kPi / 2, zf));
+        const int64_t g = fix(o[SO_GAMMA], zf, 2);
+        int64_t z0 = -fix(o[SO_LAMBDA], zf, 2);
+        const int64_t mid = z0 + (g >> 1);   // the middle of [zeta0, zeta0 + gamma] into [-pi, pi]
+        if (mid > pi) z0 -= two_pi;
+        else if (mid < -pi) z0 += two_pi;
+        nohl = n > 0 && (z0 + g <= -hp || z0 >= hp);
+        const int sh = zf - cf_.ang_frac;
+        res.regs.zeta0 = (z0 + (int64_t(1) << (sh - 1))) >> sh;
+        res.regs.dzeta = fix(o[SO_DZETA], cf_.ang_frac, 2);
+        p = o[SO_P_NF];
+    }
+    if (nohl) {
+        res.flags |= kSetupNoHighlight;
+        return res;
+    }
+    if (p.zero() || p.s) {   // C = Is A^n >= 1
+        res.flags |= kSetupCSaturated;
+        res.regs.c = (1u << cf_.c_w) - 1;
+    } else {
+        res.regs.c = c_code(p);
+    }
+    return res;
 }
 
 SetupResult SetupModel::run(const SetupInput& in) const {
-    SetupResult res;
-    SetupTrace& t = res.trace;
-    const uint32_t n = in.n & ((1u << cf_.n_w) - 1);
-    const uint32_t l = in.l & ((1u << cf_.l_w) - 1);
-    const uint32_t s = in.strength & ((1u << sf_.str_w) - 1);
-    res.regs.n = n;
-    res.regs.len = l;
-    unsigned& flags = res.flags;
-    if (l == 0) flags |= kSetupSinglePixel;
-
-    Vec n1, n2, h1, h2;
-    int32_t q[4][3];
-    const int32_t* src[4] = {in.n1, in.n2, in.h1, in.h2};
-    for (int v = 0; v < 4; ++v) {
-        for (int k = 0; k < 3; ++k) {   // the component's vec_w bits, sign-extended
-            const int32_t m = int32_t((uint32_t(src[v][k]) << (32 - sf_.vec_w)));
-            q[v][k] = m >> (32 - sf_.vec_w);
-        }
+    SetupBeat b;
+    const bool valid = beat(in, &b);
+    std::array<Fp, SO_COUNT> o{};
+    if (valid) {
+        const std::vector<Fp> v = setup_eval(sf_, tab_, prog_, b);
+        for (int k = 0; k < SO_COUNT; ++k) o[k] = v[static_cast<size_t>(prog_.out[k])];
     }
-    if (!prescale(q[0], &n1) || !prescale(q[1], &n2) || !prescale(q[2], &h1) || !prescale(q[3], &h2)) {
-        flags |= kSetupInvalid;
-        return res;   // C = 0, zeta0 = dzeta = 0
-    }
-
-    // perpendicular(N1) of the host: N1 x e_k, e_k the axis of N1's smallest component (first of x, y, z)
-    Vec pp;
-    {
-        const int64_t ax = std::abs(n1.c[X]), ay = std::abs(n1.c[Y]), az = std::abs(n1.c[Z]);
-        if (ax <= ay && ax <= az) pp = Vec{{0, n1.c[Z], -n1.c[Y]}};
-        else if (ay <= az) pp = Vec{{-n1.c[Z], 0, n1.c[X]}};
-        else pp = Vec{{n1.c[Y], -n1.c[X], 0}};
-    }
-    // The frame where N1 = z; then H2 carried by the rotation that takes N2 onto N1.
-    pass({&n1, &n2, &h1, &h2, &pp}, X, Y, false);
-    pass({&n1, &n2, &h1, &h2, &pp}, Z, X, true);
-    // Exactly opposite normals (N2's projection on the plane z = 0 within rounding of zero): the rotation
-    // axis is the host's, N1 x perpendicular(N1): P3 vectors perpendicular(N1) instead of N2's projection.
-    const int64_t tau = int64_t(1) << (sf_.f + sf_.opp_tau_log2);
-    t.proj2 = std::max(std::abs(n2.c[X]), std::abs(n2.c[Y]));
-    t.exact_opposite = n2.c[Z] < 0 && std::abs(n2.c[X]) < tau && std::abs(n2.c[Y]) < tau;
-    if (t.exact_opposite) {
-        n2.c[X] = pp.c[X];
-        n2.c[Y] = pp.c[Y];
-    }
-    pass({&n2, &h1, &h2}, X, Y, true);
-    t.rho2 = n2.c[X];
-    t.z2 = n2.c[Z];
-    if (t.exact_opposite) n2.c[X] = 0;
-    if (t.exact_opposite || (t.z2 < 0 && t.rho2 * sf_.opp_k < -t.z2)) flags |= kSetupOpposite;
-    pass({&n2, &h2}, Z, X, false);
-    // The frame where H1 = z: N1 (the old z axis) becomes a lane of its own, of start length U.
-    Vec m1{{0, 0, k_.n1_start}};
-    pass({&h1, &h2}, X, Y, true);
-    pass({&h1, &h2, &m1}, Z, X, true);
-    pass({&h2, &m1}, X, Y, true);
-    t.c1 = m1.c[Z];
-    int64_t mag_h2;
-    vector_angle(h2.c[Z], h2.c[X], &t.gamma_z, &mag_h2);
-    vector_angle(m1.c[Z], m1.c[X], &t.lambda_z, &t.mag);
-    if (in.midpoint) flags |= kSetupGammaFallback;   // the midpoint rule: not in this model yet
-
-    // Degenerate spans, angles.
-    t.flat = l == 0 || t.gamma_z < k_.flat_z;
-    bool nohl = false;
-    int64_t x;   // A * 2^f (or, flat, cos(theta1) * 2^f / G)
-    int64_t off = int64_t(sf_.f) << sf_.lf;
-    const int sh = sf_.zf - cf_.ang_frac;
-    if (t.flat) {
-        flags |= kSetupFlat;
-        x = t.c1;
-        off -= k_.log2_gain;
-        if (n > 0 && t.c1 <= 0) nohl = true;
-    } else {
-        int64_t z0 = -t.lambda_z;
-        const int64_t mid = z0 + (t.gamma_z >> 1);
-        if (mid > k_.pi) z0 -= k_.two_pi;
-        else if (mid < -k_.pi) z0 += k_.two_pi;
-        if (n > 0 && (z0 + t.gamma_z <= -k_.half_pi || z0 >= k_.half_pi)) nohl = true;
-        res.regs.zeta0 = (z0 + (int64_t(1) << (sh - 1))) >> sh;
-        res.regs.dzeta = divide(t.gamma_z, l);
-        x = t.mag;
-    }
-    check(res.regs.zeta0, cf_.ang_w, "zeta0");
-    check(res.regs.dzeta, cf_.ang_w, "dzeta");
-
-    // C = Is * A^n = 2^-p, p = n * (-log2 A) - log2 Is.
-    if (nohl) {
-        flags |= kSetupNoHighlight;
-        return res;
-    }
-    if (s == 0 || (n > 0 && x <= 0)) return res;   // C = 0
-    const int64_t la_max = int64_t(31) << sf_.lf;
-    if (x > 0) t.log2_a = std::min(la_max, std::max<int64_t>(0, off - log2_fixed(static_cast<uint64_t>(x))));
-    const int64_t log2_is = log2_fixed(s) - (int64_t(sf_.str_frac) << sf_.lf);
-    t.p = int64_t(n) * t.log2_a - log2_is;
-    if (t.p <= 0) {
-        flags |= kSetupCSaturated;
-        res.regs.c = (1u << cf_.c_w) - 1;
-    } else {
-        res.regs.c = c_code(t.p);
-    }
-    return res;
+    return finish(in, valid, o);
 }
 
 }  // namespace spec

@@ -1,33 +1,21 @@
 // setup_model.h - bit-exact C++ model of spec_setup: the span's end vectors in, spec_stream's descriptor out.
 //
 // It computes what the host (sim/host/span_host, double precision) computes - C = Is*ks*A^n, zeta0 = -lambda,
-// dzeta = gamma / l and the degenerate-case flags - with the integer operations of the RTL, in the RTL's order:
+// dzeta = gamma / l and the degenerate-case flags - with the RTL's operations in three parts:
 //
-//   pre-scale each vector by a power of two (exact; a zero vector is invalid)
-//   P1  (x,y) driven by N1, followers N2, H1, H2, P   \  the frame where N1 = z (P = perpendicular(N1) of
-//   P2  (z,x) driven by N1, followers N2, H1, H2, P   /  the host, N1 x e_k, exact from N1's components)
-//   P3  (x,y) driven by N2, followers H1, H2            N2 into the (z,x) plane: the rotation axis is y
-//                                                       (N2 exactly opposite N1: P's projection instead)
-//   P4  (z,x) driven by N2, follower H2                 H2 carried by the rotation N2 -> N1 (= z): H2'
-//   G1  (x,y) driven by H1, follower H2'             \  the frame where H1 = z, with N1 as a follower lane
-//   G2  (z,x) driven by H1, followers H2', N1        /  that starts as (0, 0, U)
-//   Q1  (x,y) driven by H2', follower N1                H2' into the (z,x) plane: the tangent T is x
-//   gamma  = angle of H2' from z (vectoring with an angle lane)
-//   lambda = atan2(N1.x, N1.z) and A * 2^f = |(N1.z, N1.x)| (vectoring with an angle lane)
-//   C = 2^-(n * -log2 A - log2 Is) by log2 / exp2 tables, dzeta = gamma / l by division, zeta0 = -lambda
-//
-// A pass vectors one coordinate pair of its driving vector onto the pair's positive first axis with
-// `iters` CORDIC micro-rotations and applies the same micro-rotations to the followers; the followers' and
-// the driver's third coordinate is multiplied by the CORDIC gain (shift-and-add terms), so that all three
-// coordinates of a vector keep one common scale. docs/setup.md has the derivation, the widths and the
-// measured accuracy.
+//   pre-stage   the beat's fields; PN = N1 x e_k (e_k the axis of N1's smallest component: the host's
+//               perpendicular(N1)); a zero vector makes the span invalid
+//   program     the dataflow program of rom/gen/setup_program.h: exact integer products of the 16-bit span ends,
+//               then floating-point operations (docs/setup.md derives them), whatever machine runs it
+//   finish      fixed point: the flat and opposite tests, the angles rounded and put where the core looks for
+//               them, C = 2^-p from an exp2 table, the flags
 #pragma once
 
+#include <array>
 #include <cstdint>
-#include <vector>
 
 #include "setup_format.h"
-#include "setup_rom.h"
+#include "setup_program.h"
 #include "spec_format.h"
 #include "spec_model.h"
 
@@ -46,7 +34,7 @@ struct SetupInput {
 // Flags on tuser; bits 0..5 are the host's SpanFlag bits (span_host.h).
 enum SetupFlag : unsigned {
     kSetupFlat = 1u << 0,           // gamma below 2^flat_log2 (or l = 0): lambda = 0, dzeta = 0
-    kSetupOpposite = 1u << 1,       // N2 within atan(1/opp_k) of -N1
+    kSetupOpposite = 1u << 1,       // 1 + N1.N2 below opp_eps (the host's 1e-6)
     kSetupCSaturated = 1u << 2,     // Is*ks*A^n >= 1: C = its largest code
     kSetupSinglePixel = 1u << 3,    // l = 0
     kSetupNoHighlight = 1u << 4,    // N.H <= 0 over the whole span: C = 0 (n >= 1)
@@ -55,17 +43,9 @@ enum SetupFlag : unsigned {
 };
 constexpr int kSetupFlagBits = 7;
 
-// Intermediate values, for tests and `specsim setup --trace`.
+// The program's results, for tests and `specsim setup --trace`.
 struct SetupTrace {
-    int64_t gamma_z = 0;    // gamma, zf fraction bits
-    int64_t lambda_z = 0;   // lambda, zf fraction bits
-    int64_t mag = 0;        // A * 2^f
-    int64_t c1 = 0;         // N1.z after Q1: cos(theta1) * 2^f / G
-    int64_t rho2 = 0, z2 = 0;   // N2 after P3: (rho2, 0, z2)
-    int64_t proj2 = 0;           // max(|N2.x|, |N2.y|) after P2
-    bool exact_opposite = false;  // N2's projection after P2 within rounding of zero, N2.z < 0
-    int64_t log2_a = 0;     // -log2 A * 2^lf (after clamping to >= 0)
-    int64_t p = 0;          // -log2 C * 2^lf
+    std::array<double, SO_COUNT> out{};   // SetupOut order
     bool flat = false;
 };
 
@@ -81,39 +61,26 @@ public:
 
     const SetupFormat& format() const { return sf_; }
     const Format& core_format() const { return cf_; }
-    const SetupConsts& consts() const { return k_; }
+    const SetupProgram& program() const { return prog_; }
+    const SetupTables& tables() const { return tab_; }
 
     SetupResult run(const SetupInput& in) const;
 
-    // The pieces, public for the unit tests.
-    struct Vec {
-        int64_t c[3];
-    };
-    // A vector's components shifted left so that the largest magnitude is in [2^(f-1), 2^f); false if zero.
-    bool prescale(const int32_t q[3], Vec* v) const;
-    // One pass: lanes[0] drives (its pair (pa, pb) goes to (+r, ~0)); every lane gets the same rotation,
-    // its third coordinate multiplied by G (halve: the pair first rounded to half, the third times G/2).
-    void pass(std::vector<Vec*> lanes, int pa, int pb, bool halve) const;
-    // Vectoring with an angle lane: *angle = atan2(b, a) in (-pi, pi] (zf fraction bits), *mag = G * |(a, b)|.
-    void vector_angle(int64_t a, int64_t b, int64_t* angle, int64_t* mag) const;
-    // sum of sign * floor(t / 2^shift)
-    int64_t gain_mul(int64_t t, bool halve) const;
-    // log2(x) * 2^lf for x > 0 (x < 2^48): leading one, table, linear interpolation.
-    int64_t log2_fixed(uint64_t x) const;
-    // 2^(-p / 2^lf) * 2^ef for 0 <= p < 2^lf (table and linear interpolation), in (2^(ef-1), 2^ef].
-    int64_t exp2_frac(int64_t p) const;
-    // round(2^(c_w - p / 2^lf)) for p > 0, 0 when it is below 1/2 LSB's worth; at most 2^c_w - 1.
-    uint32_t c_code(int64_t p) const;
-    // round(gamma_z / (l * 2^(zf - ang_frac))), gamma_z >= 0, l >= 1.
-    int64_t divide(int64_t gamma_z, uint32_t l) const;
+    // The pieces, public for the tests and the machine checker.
+    // The pre-stage: the beat's fields as the IDOT unit reads them; false when an end vector is zero.
+    bool beat(const SetupInput& in, SetupBeat* b) const;
+    // The finish stage on the program's results.
+    SetupResult finish(const SetupInput& in, bool valid, const std::array<Fp, SO_COUNT>& o) const;
+    // round(x * 2^frac), half away from zero, saturated to |x| < 2^sat (frac, sat: the finish's widths)
+    int64_t fix(const Fp& x, int frac, int sat) const;
+    // C's code for p = -log2 C > 0: round(2^(c_w - p)), 0 when p >= 64, at most 2^c_w - 1
+    uint32_t c_code(const Fp& p) const;
 
 private:
-    void check(int64_t v, int bits, const char* what) const;   // internal error when v leaves its width
-
     SetupFormat sf_;
     Format cf_;
-    SetupConsts k_;
-    std::vector<uint64_t> log2_, exp2_;
+    SetupProgram prog_;
+    SetupTables tab_;
 };
 
 }  // namespace spec

@@ -24,7 +24,7 @@ SetupInput span_beat(const SetupFormat& sf, const SpanEndsJob& job) {
 
 namespace {
 std::vector<SetupInput> beats_of(const std::vector<SpanEndsJob>& jobs) {
-    const SetupFormat sf;
+    const SetupFormat sf = setup_format_config("ecp5");   // the beat's formats are both configurations'
     std::vector<SetupInput> beats;
     beats.reserve(jobs.size());
     for (const SpanEndsJob& j : jobs) beats.push_back(span_beat(sf, j));
@@ -48,10 +48,10 @@ private:
     Model model_;
 };
 
-// The bit-exact models: SetupModel, then the core's Model
+// The bit-exact models: the configuration's setup model, then the core's Model
 class ShaderModels : public SpanEndsCore {
 public:
-    explicit ShaderModels(SetupConfig c) : core_(shader_core_format(c)) {}
+    explicit ShaderModels(SetupConfig c) : setup_(c), core_(shader_core_format(c)) {}
     std::vector<SpanEndsResult> spans(const std::vector<SpanEndsJob>& jobs) override {
         std::vector<SpanEndsResult> out;
         for (const SetupInput& in : beats_of(jobs)) {
@@ -64,7 +64,7 @@ public:
     const Model& pixel_model() const override { return core_; }
 
 private:
-    SetupModel setup_;
+    ConfigSetupModel setup_;
     Model core_;
 };
 }  // namespace

@@ -18,7 +18,8 @@ SetupInput span_beat(const SetupFormat& sf, const SpanEndsJob& job);
 // The Verilated spec_shader of configuration c as a SpanEndsCore (spans streamed back to back, the sink
 // always ready; cycle() counts its clocks).
 std::unique_ptr<SpanEndsCore> make_shader_core(SetupConfig c);
-// The same through the bit-exact models (SetupModel, then the core's Model): what the RTL must give.
+// The same through the bit-exact models (the configuration's setup model, then the core's Model): what the RTL
+// must give.
 std::unique_ptr<SpanEndsCore> make_shader_models(SetupConfig c);
 
 // The renderer's specular pass through them (render::shade_specular with the core above).

@@ -6,20 +6,10 @@
 #include "Vspec_setup.h"
 #include "Vspec_setup_small.h"
 #include "Vspec_shader.h"
-#include "Vspec_shader_small.h"
+#include "Vspec_shader_up5k.h"
 #include "setup_driver.h"
 
 namespace spec {
-
-const char* setup_config_name(SetupConfig c) { return c == SetupConfig::small ? "small" : "pipelined"; }
-
-SetupConfig parse_setup_config(const std::string& s) {
-    if (s == "pipelined") return SetupConfig::pipelined;
-    if (s == "small") return SetupConfig::small;
-    throw std::invalid_argument("unknown configuration '" + s + "' (pipelined, small)");
-}
-
-Format shader_core_format(SetupConfig c) { return config_format(c == SetupConfig::small ? "up5k" : "default"); }
 
 namespace {
 template <class V>
@@ -61,11 +51,11 @@ private:
 }  // namespace
 
 SetupDescriptor setup_rtl(SetupConfig c, const SetupInput& in) {
-    return c == SetupConfig::small ? setup_one<Vspec_setup_small>(in) : setup_one<Vspec_setup>(in);
+    return c == SetupConfig::up5k ? setup_one<Vspec_setup_small>(in) : setup_one<Vspec_setup>(in);
 }
 
 std::unique_ptr<ShaderRtl> make_shader_rtl(SetupConfig c) {
-    if (c == SetupConfig::small) return std::make_unique<ShaderRtlImpl<Vspec_shader_small>>();
+    if (c == SetupConfig::up5k) return std::make_unique<ShaderRtlImpl<Vspec_shader_up5k>>();
     return std::make_unique<ShaderRtlImpl<Vspec_shader>>();
 }
 

@@ -7,21 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "setup_model.h"
-#include "spec_format.h"
+#include "setup_config.h"
 
 namespace spec {
-
-// The shader's configurations (docs/setup.md): the setup's architecture and spec_stream's configuration.
-enum class SetupConfig {
-    pipelined,   // spec_setup fully pipelined (a new span every clock), spec_stream's default configuration
-    small,       // spec_setup one span at a time (the UP5K), spec_stream's up5k configuration
-};
-const char* setup_config_name(SetupConfig c);
-// Throws std::invalid_argument (one line) for anything but "pipelined" or "small".
-SetupConfig parse_setup_config(const std::string& s);
-// spec_stream's format in the configuration (the core's bit-exact model for its pixels).
-Format shader_core_format(SetupConfig c);
 
 struct SetupDescriptor {
     SpanRegs regs;

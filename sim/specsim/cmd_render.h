@@ -26,7 +26,7 @@ struct RenderOptions {
     double amp = 16;
     int progress = -1;  // -1: when stderr is a terminal
     bool cull = false;  // --cull-specular
-    SetupConfig shader_config = SetupConfig::pipelined;   // --shader-config (--model shader, docs/setup.md)
+    SetupConfig shader_config = SetupConfig::ecp5;   // --shader-config (--model shader, docs/setup.md)
     // overrides of the scene's light, material and camera
     bool has_light_dir = false, has_light_color = false, has_intensity = false, has_ambient = false;
     render::dvec3 light_dir, light_color, ambient;

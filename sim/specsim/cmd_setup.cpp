@@ -26,8 +26,8 @@ const char* const kSetupUsage =
     "           --len L        intervals l, 0..65535 (l + 1 pixels)\n"
     "           --model M      rtl (Verilated spec_setup, default) | golden (bit-exact model) | host (double)\n"
     "           --gamma G      patent (default) | midpoint (docs/host.md, docs/setup.md)\n"
-    "           --config C     pipelined (default) | small (the setup one span at a time and spec_stream's up5k\n"
-    "                          configuration; golden: the core model's tables for --pixels)\n"
+    "           --config C     ecp5 (default: the multiplier setup, spec_stream) | up5k (the small CORDIC setup,\n"
+    "                          spec_stream_seq and spec_stream's up5k tables; docs/setup.md)\n"
     "           --pixels       also the span's pixels through the whole shader, CSV 'i,value' (rtl: the\n"
     "                          Verilated spec_shader; golden: the models; host: exact cos^n in double)\n";
 
@@ -120,7 +120,7 @@ SetupOptions parse_setup(int argc, char** argv) {
 
 SetupReport setup_compute(const SetupOptions& o) {
     SetupReport r;
-    const SetupModel sm;
+    const ConfigSetupModel sm(o.config);
     if (o.model == "host") {
         r.host = true;
         const Model core(shader_core_format(o.config));

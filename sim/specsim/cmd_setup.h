@@ -13,7 +13,7 @@ namespace spec {
 struct SetupOptions {
     SetupInput in;                        // the quantized beat
     std::string model = "rtl";            // rtl | golden | host
-    SetupConfig config = SetupConfig::pipelined;
+    SetupConfig config = SetupConfig::ecp5;
     bool pixels = false;                  // --pixels: the span's pixels through the whole shader
 };
 

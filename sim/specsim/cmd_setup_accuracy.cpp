@@ -2,6 +2,7 @@
 // double-precision setup with exact cos^n, per pixel, for every n and every kind of span (issue 13, item 4;
 // sim/setup/setup_eval.h has the bound and the conditioning rule). Prints the table docs/setup.md shows.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -23,7 +24,11 @@ const char* const kSetupAccuracyUsage =
     "                every n 0..1023 and every kind of span (random, nearly equal ends, constant normal, nearly\n"
     "                opposite normals, N.H <= 0, gamma -> 0, l = 0, C saturating); prints worst error / bound\n"
     "                --per-n K (1..64, default 2: spans per n and kind) --seed S --max-len L (0..65535, default 40)\n"
-    "                --model golden|rtl (default golden; equal bit for bit) --config pipelined|small\n"
+    "                --model golden|rtl (default golden; equal bit for bit) --config ecp5|up5k (default ecp5)\n"
+    "                --gamma patent|midpoint|both (the rule each span asks for; both: chosen at random per span;\n"
+    "                default both in ecp5, patent in up5k, whose small setup has only the patent's)\n"
+    "                --share X (the setup's share of the bound, default the configuration's: 0.002 in ecp5,\n"
+    "                issue 13's; 0.02 in up5k, what its format supports, docs/setup.md)\n"
     "                --json FILE (also write the figures as JSON)\n";
 
 namespace {
@@ -37,8 +42,9 @@ struct Row {
 
 int cmd_setup_accuracy(int argc, char** argv) {
     long long per_n = 2, seed = 1, max_len = 40;
-    std::string model = "golden", json;
-    SetupConfig cfg = SetupConfig::pipelined;
+    std::string model = "golden", json, gamma;
+    double share = -1;
+    SetupConfig cfg = SetupConfig::ecp5;
     Args a(argc, argv, 2);
     while (!a.done()) {
         const std::string fl = a.flag();
@@ -50,6 +56,14 @@ int cmd_setup_accuracy(int argc, char** argv) {
         else if (fl == "--seed") seed = parse_int(fl, a.value(fl), 0, 1LL << 40);
         else if (fl == "--max-len") max_len = parse_int(fl, a.value(fl), 0, 65535);
         else if (fl == "--json") json = a.value(fl);
+        else if (fl == "--share") {
+            share = parse_double(fl, a.value(fl));
+            if (!(share >= 0.0 && share <= 1.0)) throw UsageError("--share: must be in [0, 1]");
+        } else if (fl == "--gamma") {
+            gamma = a.value(fl);
+            if (gamma != "patent" && gamma != "midpoint" && gamma != "both")
+                throw UsageError("--gamma: '" + gamma + "' is not patent, midpoint or both");
+        }
         else if (fl == "--model") {
             model = a.value(fl);
             if (model != "golden" && model != "rtl") throw UsageError("--model: '" + model + "' is not golden or rtl");
@@ -63,8 +77,11 @@ int cmd_setup_accuracy(int argc, char** argv) {
             throw UsageError("setup-accuracy: unknown option " + fl);
         }
     }
-    const SetupModel sm;
+    const ConfigSetupModel sm(cfg);
     const Model core(shader_core_format(cfg));
+    if (gamma.empty()) gamma = cfg == SetupConfig::up5k ? "patent" : "both";
+    CheckOptions co = setup_config_check(cfg);
+    if (share >= 0) co.setup_share = share;
     std::mt19937_64 rng(static_cast<uint64_t>(seed));
     std::unique_ptr<ShaderRtl> rtl;
     if (model == "rtl") rtl = make_shader_rtl(cfg);
@@ -81,7 +98,10 @@ int cmd_setup_accuracy(int argc, char** argv) {
         kinds[k].name = kind_name(SpanKind(k));
         std::vector<SetupInput> ins;
         for (unsigned n = 0; n < 1024; ++n)
-            for (long long r = 0; r < per_n; ++r) ins.push_back(random_case(rng, sm.format(), SpanKind(k), n, uint32_t(max_len)));
+            for (long long r = 0; r < per_n; ++r) {
+                ins.push_back(random_case(rng, sm.format(), SpanKind(k), n, uint32_t(max_len)));
+                ins.back().midpoint = gamma == "midpoint" || (gamma == "both" && (rng() & 1));
+            }
         std::vector<std::vector<uint32_t>> px;
         if (rtl) {
             for (auto& s : rtl->run(ins)) px.push_back(std::move(s.pixels));
@@ -89,7 +109,7 @@ int cmd_setup_accuracy(int argc, char** argv) {
             for (const SetupInput& in : ins) px.push_back(core.span(sm.run(in).regs));
         }
         for (size_t i = 0; i < ins.size(); ++i) {
-            const SpanCheck c = check_span(core, sm.format(), ins[i], px[i], rng);
+            const SpanCheck c = check_span(core, sm.format(), ins[i], px[i], rng, co);
             int rg = 0;
             while (!(ins[i].n >= ranges[rg].lo && ins[i].n <= ranges[rg].hi)) ++rg;
             for (Row* row : {&kinds[k], &by_n[rg]}) {
@@ -116,11 +136,12 @@ int cmd_setup_accuracy(int argc, char** argv) {
         }
         return o.str();
     };
-    std::printf("spec_shader (%s model, %s configuration) against the host in double precision with exact cos^n,\n"
-                "%lld span(s) per n and kind, l = 0..%lld; bound per pixel: inside the epicentre host (q(n) + 0.004) +"
-                " 2^-13,\nelsewhere C (a(n) + 0.004) + 2^-12; widened for ill-conditioned spans by the host's answers for"
-                " end vectors\nmoved by 2^-20 rad (sim/setup/setup_eval.h)\n\n",
-                model.c_str(), setup_config_name(cfg), per_n, max_len);
+    std::printf("spec_shader (%s model, %s configuration, gamma rule %s) against the host in double precision with exact\n"
+                "cos^n, %lld span(s) per n and kind, l = 0..%lld; bound per pixel: inside the epicentre host (q(n) + %.4g) +"
+                " 2^-13,\nelsewhere C (a(n) + %.4g) + 2^-12; widened for ill-conditioned spans by the host's answers for"
+                " end vectors\nmoved by 2^%d rad (sim/setup/setup_eval.h)\n\n",
+                model.c_str(), setup_config_name(cfg), gamma.c_str(), per_n, max_len, 0.002 + co.setup_share,
+                0.002 + co.setup_share, std::ilogb(co.eps));
     std::cout << table("kind of span", kinds) << "\n" << table("BRDF range", by_n);
     double worst = 0;
     size_t spans = 0, widened = 0;
@@ -133,7 +154,8 @@ int cmd_setup_accuracy(int argc, char** argv) {
                 widened, 100.0 * double(widened) / double(spans));
     if (!json.empty()) {
         std::ostringstream o;
-        o << "{\"worst\": " << worst << ", \"spans\": " << spans << ", \"widened\": " << widened << ", \"kinds\": [";
+        o << "{\"config\": \"" << setup_config_name(cfg) << "\", \"gamma\": \"" << gamma << "\", \"share\": " << co.setup_share << ", \"eps_log2\": " << std::ilogb(co.eps)
+          << ", \"worst\": " << worst << ", \"spans\": " << spans << ", \"widened\": " << widened << ", \"kinds\": [";
         for (size_t i = 0; i < kinds.size(); ++i)
             o << (i ? ", " : "") << "{\"name\": \"" << kinds[i].name << "\", \"worst\": " << kinds[i].worst
               << ", \"widened\": " << kinds[i].widened << ", \"spans\": " << kinds[i].spans << "}";

@@ -1,6 +1,6 @@
 // cmd_setup_vectors.cpp - specsim setup-vectors: test vectors for the Icarus testbench of spec_shader
 // (tests/iverilog/tb_spec_shader.v, ctest icarus_spec_shader): random and degenerate span ends and, from the
-// bit-exact models (SetupModel, then the core's Model), every pixel the shader must give.
+// bit-exact models (the configuration's setup model, then the core's Model), every pixel the shader must give.
 //
 //   FILE.beats   one span-ends beat a line, 64 hex digits (docs/setup.md's layout)
 //   FILE.pixels  one pixel a line, 6 hex digits: {flags (7 bits), tlast, value (16 bits)}
@@ -22,12 +22,12 @@ namespace spec {
 const char* const kSetupVectorsUsage =
     "  setup-vectors  test vectors for the Icarus testbench of spec_shader: --out PREFIX (PREFIX.beats,\n"
     "                PREFIX.pixels) --spans N (1..100000, default 200) --seed S --max-len L (0..255, default 12)\n"
-    "                --config pipelined|small (the core's configuration the pixels are for)\n";
+    "                --config ecp5|up5k (the configuration the pixels are for; default ecp5)\n";
 
 int cmd_setup_vectors(int argc, char** argv) {
     std::string out;
     long long spans = 200, seed = 1, max_len = 12;
-    SetupConfig cfg = SetupConfig::pipelined;
+    SetupConfig cfg = SetupConfig::ecp5;
     Args a(argc, argv, 2);
     while (!a.done()) {
         const std::string fl = a.flag();
@@ -46,7 +46,7 @@ int cmd_setup_vectors(int argc, char** argv) {
         }
     }
     if (out.empty()) throw UsageError("setup-vectors: --out PREFIX is required");
-    const SetupModel sm;
+    const ConfigSetupModel sm(cfg);
     const Model core(shader_core_format(cfg));
     std::mt19937_64 rng(static_cast<uint64_t>(seed));
     std::ofstream fb(out + ".beats"), fp(out + ".pixels");
@@ -57,6 +57,7 @@ int cmd_setup_vectors(int argc, char** argv) {
                                        : random_case(rng, sm.format(), SpanKind(rng() % unsigned(SpanKind::count)),
                                                      static_cast<unsigned>(rng() % 1024), static_cast<uint32_t>(max_len));
         in.l %= static_cast<uint32_t>(max_len) + 1;
+        if (rng() % 2) in.midpoint = !in.midpoint;
         uint32_t w[setup_params::BEAT_W / 32];
         pack_setup_beat(in, w);
         for (int i = setup_params::BEAT_W / 32 - 1; i >= 0; --i) {

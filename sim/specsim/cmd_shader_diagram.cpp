@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "Vspec_shader.h"
-#include "Vspec_shader_small.h"
+#include "Vspec_shader_up5k.h"
 #include "cli.h"
 #include "commands.h"
 #include "setup_driver.h"
@@ -22,7 +22,7 @@ namespace spec {
 const char* const kShaderDiagramUsage =
     "  shader-diagram  spec_shader's ports cycle by cycle from a simulation: three spans (3, 1, 2 pixels)\n"
     "                back to back, one clock of sink stall; latency from a beat's acceptance to its first pixel\n"
-    "                --config pipelined|small (default pipelined)\n";
+    "                --config ecp5|up5k (default ecp5)\n";
 
 namespace {
 struct Sample {
@@ -56,7 +56,7 @@ std::string row(const char* name, const std::vector<Sample>& w, size_t a, size_t
 }  // namespace
 
 int cmd_shader_diagram(int argc, char** argv) {
-    SetupConfig cfg = SetupConfig::pipelined;
+    SetupConfig cfg = SetupConfig::ecp5;
     Args a(argc, argv, 2);
     while (!a.done()) {
         const std::string fl = a.flag();
@@ -71,7 +71,7 @@ int cmd_shader_diagram(int argc, char** argv) {
         }
     }
     // three spans: a highlight across the span (N constant, H turning), n = 10, Is*ks = 1
-    const SetupFormat sf;
+    const SetupFormat sf = setup_format_config("ecp5");
     std::vector<SetupInput> spans;
     const uint32_t lens[3] = {2, 0, 1};
     for (uint32_t l : lens) {
@@ -85,8 +85,8 @@ int cmd_shader_diagram(int argc, char** argv) {
         in.l = l;
         spans.push_back(in);
     }
-    const std::vector<Sample> w = cfg == SetupConfig::small ? simulate<Vspec_shader_small>(spans)
-                                                            : simulate<Vspec_shader>(spans);
+    const std::vector<Sample> w = cfg == SetupConfig::up5k ? simulate<Vspec_shader_up5k>(spans)
+                                                           : simulate<Vspec_shader>(spans);
     size_t acc0 = w.size(), px0 = w.size(), px_end = 0;
     for (size_t c = 0; c < w.size(); ++c) {
         if (acc0 == w.size() && w[c].s_valid && w[c].s_ready) acc0 = c;

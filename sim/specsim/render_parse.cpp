@@ -18,7 +18,7 @@ const char* const kRenderUsage =
     "                          ref (double, exact Blinn-Phong for the interpolated vectors) |\n"
     "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n) |\n"
     "                          shader (Verilated spec_shader: span ends in, setup and core in RTL; docs/setup.md)\n"
-    "           --shader-config C  pipelined (default) | small: the shader's configuration (--model shader)\n"
+    "           --shader-config C  ecp5 (default) | up5k: the shader's configuration (--model shader, docs/setup.md)\n"
     "           --mode M       patent (default) | tuned | pow: the rtl and golden models' mode (docs/tuned.md,\n"
     "                          docs/pow.md)\n"
     "           --out FILE     the rendered PNG (required)\n"

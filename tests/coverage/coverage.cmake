@@ -9,9 +9,9 @@ set(SPEC_COV_MODELS
   Vspec_unit Vspec_stream Vspec_stream_up5k Vspec_unit_tuned Vspec_stream_tuned
   Vspec_unit_up5k Vspec_ctrl Vspec_datapath Vspec_counter Vspec_accum Vspec_decoder Vspec_mul11 Vspec_mul13
   Vparallax_step Vparallax_iter Vparallax_iter_s1 Vparallax_iter_s16
-  Vspec_setup_pipe Vspec_setup Vspec_setup_small Vspec_shader Vspec_shader_small
+  Vspec_setup Vspec_setup_small Vspec_shader Vspec_shader_up5k
   Vspec_stream_l2 Vspec_stream_l4 Vspec_stream_l2p Vspec_stream_l4p Vspec_stream_l2p_up5k
-  Vspec_stream_seq Vspec_stream_seq_up5k Vspec_stream_seq_tuned Vspec_shader_seq)
+  Vspec_stream_seq Vspec_stream_seq_up5k Vspec_stream_seq_tuned)
 set(_inc "")
 set(_wraps "")
 foreach(m ${SPEC_COV_MODELS})

@@ -1,21 +1,25 @@
-// tb_spec_shader - self-checking Icarus Verilog testbench for spec_shader (spec_setup -> spec_stream).
+// tb_spec_shader - self-checking Icarus Verilog testbench for spec_shader in either configuration.
 // Reads +beats=FILE and +pixels=FILE (written by `specsim setup-vectors` from the bit-exact models) and
 // +spans=S +npixels=P, sends every beat with random gaps on s_axis_tvalid, takes the pixels with random
 // m_axis_tready, and compares each pixel's value, tlast and tuser in order; a mismatch, a lost or extra pixel
-// or a hang ends with $fatal (exit 1). +stall=P: stall probability in percent (default 30). ITERATIVE picks the
-// configuration (with the small one, pass the up5k configuration's header directory and ROM images).
+// or a hang ends with $fatal (exit 1). +stall=P: stall probability in percent (default 30). ITERATIVE and BACKEND
+// pick the configuration (up5k: ITERATIVE = 1, BACKEND = 1, with spec_stream's up5k header and ROM images).
 // 4-state: rst_n is low for exactly one clock at the start; from then on no output is X or Z.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
 `include "setup_params.vh"
+`include "setup_small_params.vh"
 module tb_spec_shader #(
     parameter ITERATIVE = 0,
     parameter BACKEND = 0,      // spec_shader's back end: 0 = spec_stream, 1 = spec_stream_seq
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
-    parameter LOG2_FILE = `SETUP_LOG2_FILE,
-    parameter EXP2_FILE = `SETUP_EXP2_FILE
+    parameter EFU_FILE = `SETUP_EFU_FILE,
+    parameter EXP2_FILE = `SETUP_EXP2_FILE,
+    parameter UC_FILE = `SETUP_UC_FILE,
+    parameter SMALL_LOG2_FILE = `SMALL_LOG2_FILE,
+    parameter SMALL_EXP2_FILE = `SMALL_EXP2_FILE
 );
     localparam SMAX = 4096, PMAX = 65536;
     localparam BEAT_W = `SETUP_BEAT_W, OUT_W = `SPEC_OUT_W;
@@ -31,8 +35,9 @@ module tb_spec_shader #(
     wire [6:0] m_user;
     reg m_ready = 1'b0;
 
-    spec_shader #(.ITERATIVE(ITERATIVE), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .LOG2_FILE(LOG2_FILE),
-                  .EXP2_FILE(EXP2_FILE)) dut (
+    spec_shader #(.ITERATIVE(ITERATIVE), .BACKEND(BACKEND), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                  .EFU_FILE(EFU_FILE), .EXP2_FILE(EXP2_FILE), .UC_FILE(UC_FILE), .SMALL_LOG2_FILE(SMALL_LOG2_FILE),
+                  .SMALL_EXP2_FILE(SMALL_EXP2_FILE)) dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready), .s_axis_tdata(s_data),
         .m_axis_tvalid(m_valid), .m_axis_tready(m_ready), .m_axis_tdata(m_data), .m_axis_tlast(m_last),
         .m_axis_tuser(m_user)
