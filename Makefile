@@ -15,14 +15,16 @@
 #               (spec_shader's pixels per clock on the default scene's spans)
 #   make synth  iCE40 UP5K / ECP5 / 7-series synthesis with area and Fmax (build/synth/*.json)
 #   make fusesoc  the FuseSoC core through FuseSoC's lint, sim and synth flows (when fusesoc is installed)
-#   make compare  patent mode vs tuned mode vs the prototype, worst errors per BRDF range (docs/tuned.md)
+#   make compare  patent, tuned and pow mode, the prototype and a per-material table, worst errors per BRDF range
+#               (docs/tuned.md, docs/pow.md)
 #   make tables   table sets and table sizes against ROM bits, both modes: docs/img/tables.png, and docs/tables.md
 #               (scripts/docgen.py's block; the ctest docs_current reruns it)
 #   make methods  the three companion papers measured: specsim highlight, normalize, parallax; regenerates the
 #               tables of docs/methods.md and README.md, plots and pictures in build/methods and docs/img
 # Verification in depth (docs/verification.md; not part of make test):
-#   make formal     formal proofs and covers of spec_unit and spec_stream (yosys-smtbmc + z3, reduced widths)
-#   make formal-mutants  the same properties on 11 deliberately broken copies of rtl/: each must fail
+#   make formal     formal proofs and covers of spec_unit and spec_stream, also in pow mode (yosys-smtbmc + z3,
+#                   reduced widths)
+#   make formal-mutants  the same properties on deliberately broken copies of rtl/ (also in pow mode): each must fail
 #   make coverage   Verilator line and toggle coverage of the test suite, per RTL file (build-cov)
 #   make test-long  LONG_PIXELS (10^8) random pixels through each core against the model (a minute or two),
 #                   LONG_SPANS (10^6) random and degenerate span ends through spec_setup / spec_shader
@@ -86,6 +88,16 @@ lint: deps
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GTBL_AW=8 -GINTERP=1 -GSCALE_W=16 \
 	        -GSCALE_FRAC=13 || exit 1; \
 	    echo "  $$top in the up5k configuration (INTERP = 1): clean"; \
+	done
+	@for top in spec_unit spec_stream spec_stream_seq; do \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GPOW=1 || exit 1; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module $$top -GPOW=1 -GPOW_IDX_W=5 -GTBL_AW=8 -GINTERP=1 \
+	        -GSCALE_W=16 -GSCALE_FRAC=13 || exit 1; \
+	    echo "  $$top in pow mode (POW = 1), default and up5k configurations: clean"; \
+	done
+	@for lp in "2 1" "4 0" "4 1"; do set -- $$lp; \
+	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 -GPOW=1 || exit 1; \
+	    echo "  spec_stream in pow mode with LANES = $$1, PACK = $$2: clean"; \
 	done
 	@for lp in "2 0" "2 1" "4 0" "4 1"; do set -- $$lp; \
 	    verilator --lint-only -Wall -Irom $(RTL_CORE) --top-module spec_stream -GLANES=$$1 -GPACK=$$2 || exit 1; \
@@ -217,10 +229,13 @@ deps-synth:
 	@scripts/deps.sh nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb python3
 
 # Every run places and routes with seeds 1-5 and reports the worst (and icetime's on the iCE40); the issue-14
-# runs (spec_stream, up5k configuration, LANES = 1, 2 on the UP5K, 1 and 4 on the ECP5) go to docs/data/synth.json, from which
-# docs/stream.md's table is made (make docs). SYNTH_RUNS picks other runs (syn/synth.py --runs).
+# runs (spec_stream, up5k configuration, LANES = 1, 2 on the UP5K, 1 and 4 on the ECP5) and the same in pow mode
+# (issue 30, up5k-pow) go to docs/data/synth.json, from which docs/stream.md's and docs/pow.md's tables are made
+# (make docs). SYNTH_RUNS picks other runs (syn/synth.py --runs).
 SYNTH_RUNS ?= ice40-up5k:spec_stream:up5k:1 ice40-up5k:spec_stream:up5k:2 ecp5-25f:spec_stream:up5k:1 \
-              ecp5-25f:spec_stream:up5k:4 ice40-up5k:spec_stream_seq:up5k:1
+              ecp5-25f:spec_stream:up5k:4 ice40-up5k:spec_stream_seq:up5k:1 \
+              ice40-up5k:spec_stream:up5k-pow:1 ice40-up5k:spec_stream:up5k-pow:2 ecp5-25f:spec_stream:up5k-pow:1 \
+              ecp5-25f:spec_stream:up5k-pow:4 ice40-up5k:spec_stream_seq:up5k-pow:1
 synth: build deps-synth
 	@mkdir -p $(BUILD)/synth && rm -f $(BUILD)/synth/synth.json
 	@# rows of runs that cannot run here (no ECP5 tools) keep the committed figures
@@ -235,6 +250,10 @@ synth: build deps-synth
 	python3 syn/dsp_pack_check.py --target ice40-up5k --config up5k --lanes 2 --cycles 2000 \
 	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/dsp_pack_check.py --target ecp5-25f --config up5k --lanes 1 --cycles 2000 \
+	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
+	python3 syn/dsp_pack_check.py --target ice40-up5k --config up5k-pow --lanes 2 --cycles 2000 \
+	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
+	python3 syn/dsp_pack_check.py --target ecp5-25f --config up5k-pow --lanes 1 --cycles 2000 \
 	    --out $(BUILD)/dsp_pack_check --specrom $(BUILD)/specrom
 	python3 syn/synth.py --targets ice40-up5k,ecp5-25f,xc7 --tops spec_unit,parallax_iter --configs up5k,default \
 	    --seeds 1-5 --out $(BUILD)/synth/other --specrom $(BUILD)/specrom

@@ -127,11 +127,11 @@ JOBS = {
 }
 # spec_stream_seq (the compact back end, one span at a time; formal/fv_spec_stream_seq.v): AXI rules, l + 1 pixels a
 # span in order with tlast on the last, one span at a time, no deadlock; k = 1 with helper invariants over the
-# datapath's valid and last flags (spec_delay's registers: Yosys makes the array a list of registers r[0] ..); the
+# datapath's valid and last flags (spec_datapath's vs_q and ls_q); the
 # covers and the mutants on the model without the helper invariants (the mutants show what the properties catch)
 JOBS["spec_stream_seq"] = dict(
     core="spec_stream_seq", wrapper="fv_spec_stream_seq",
-    expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.u_last.genblk1.g_regs.r*",
+    expose=["ready_q", "run", "cnt", "ce", "u_dp.g_ctrl.vs_q", "u_dp.g_ctrl.ls_q",
             "u_out.have_q", "u_out.skid_v", "u_out.skid_keep", "u_out.skid_last"],
     cut=["dp_out"], depth=1, split=True, bmc=24, cover=34, lean_defines=["FV_NO_HELPERS"])
 # The small setup (spec_setup_small, the up5k configuration's: spec_setup_engine, spec_setup_backend;
@@ -152,6 +152,22 @@ JOBS["setup_engine"] = dict(
     # the two multipliers' products feed data only (the opposite test, the table interpolation): left free
     cut=["u_engine.rho2k", "u_engine.u_back.tprod"],
     depth=3, bmc=12, cover=16)
+# Pow mode (issue 30, docs/pow.md): the control is the patent's, so the same proofs run with pow mode's
+# parameters: the generator's pow images and header at the reduced widths (a log table of 2 x 4 segments x 4
+# entries, 8-bit values; ROM 12 of 16 positions of 9 bits: pow mode needs TBL_FRAC >= 8), the datapath
+# spec_powpath with its longer latency (the wrappers read it from the header)
+# (POW_ARGS: the first pair replaces WIDTHS' --tbl-frac, the rest follow; docs/verification.md quotes them)
+POW_ARGS = ["--tbl-frac", "8", "--mode", "pow", "--pow-seg-w", "2", "--pow-idx-w", "2", "--pow-frac", "2",
+            "--pow-val-w", "8", "--pow-dlt-w", "8", "--pow-sh-w", "4", "--pow-xb", "4", "--pow-yf", "6", "--pow-yi", "3"]
+WIDTHS_POW = with_args(WIDTHS, {POW_ARGS[0]: POW_ARGS[1]}) + POW_ARGS[2:]
+# The pipeline is 8 stages longer at these widths (spec_unit's first pixel in cycle 23 instead of 15; the longest
+# span, l = 7, ends in cycle 37; a Start without a load repeats a span of l = 3, the second ending near cycle 60):
+# the base case and the covers reach as far past them as patent mode's jobs do. spec_stream_seq takes the next
+# descriptor only when the datapath is empty, so its covers of a second span (its second pixel; two spans out and
+# one in the datapath) pass through the longer pipeline twice: 16 cycles more than patent mode's 34.
+JOBS["spec_unit_pow"] = dict(JOBS["spec_unit"], rom="rom_pow", widths=WIDTHS_POW, bmc=48, cover=64)
+JOBS["spec_stream_pow"] = dict(JOBS["spec_stream"], rom="rom_pow", widths=WIDTHS_POW, cover=46)
+JOBS["spec_stream_seq_pow"] = dict(JOBS["spec_stream_seq"], rom="rom_pow", widths=WIDTHS_POW, cover=50)
 for _lanes, _pack in ((2, 1), (4, 0)):
     # bounded checks and covers only: fv_spec_stream.v's helper invariants are written for LANES = 1
     JOBS["spec_stream_l%d%s" % (_lanes, "p" if _pack else "")] = dict(JOBS["spec_stream"], depth=None, bmc=32,
@@ -171,7 +187,8 @@ for _lanes, _pack in ((2, 1), (4, 0)):
 # state where every assertion held for k cycles, not necessarily one reachable from reset; the equivalent change
 # shows that the proof survives a harmless edit).
 MUTANT_BMC = {"spec_unit": 40, "spec_stream": 32, "spec_stream_l2p": 32, "spec_stream_l4": 32, "spec_setup": 20,
-              "spec_shader": 40, "spec_stream_seq": 36, "setup_engine": 8}
+              "spec_shader": 40, "spec_stream_seq": 36, "setup_engine": 8, "spec_unit_pow": 48,
+              "spec_stream_pow": 40, "spec_stream_seq_pow": 44}
 MUTANT_STEPS = {"spec_setup": ["bmc", "induction"], "setup_engine": ["bmc", "induction"]}
 MUTANTS = [
     ("spec_unit", "spec_unit.v", "wire len_we = ~len_load_n & idle;", "wire len_we = ~len_load_n;",
@@ -238,6 +255,15 @@ MUTANTS = [
      "seq: a descriptor taken while tready is low"),
     ("spec_stream_seq", "spec_stream_out.v", "(in_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
      "seq: the skid buffer drops a pixel on a stall"),
+    # pow mode (issue 30): the same control under pow mode's longer datapath
+    ("spec_unit_pow", "spec_unit.v", "assign busy_o = sig28 | fresh8 | dp_busy;", "assign busy_o = sig28 | fresh8;",
+     "pow: busy_o falls before the last pixel is out"),
+    ("spec_unit_pow", "spec_datapath.v", "else if (ce) vs_q <= {vs_q[LAT-1:1], in_valid};",
+     "else if (ce) vs_q <= {vs_q[LAT-2:1], in_valid, in_valid};", "pow: the valid pipeline one stage short"),
+    ("spec_stream_pow", "spec_stream_out.v", "(in_valid & m_axis_tvalid & ~m_axis_tready);", "1'b0;",
+     "pow: the skid buffer drops a pixel on a stall"),
+    ("spec_stream_seq_pow", "spec_stream_seq.v", "ready_q <= ~accept & ~run & ~dp_busy;", "ready_q <= ~accept & ~run;",
+     "pow seq: a descriptor taken while the datapath holds the span before"),
     ("setup_engine", "spec_setup_engine.v", "                        s_tready <= 1'b0;\n                        run_fields",
      "                        run_fields", "engine: s_tready stays 1 after a span is taken"),
     ("setup_engine", "spec_setup_engine.v", "            st <= ST_IDLE;\n            s_tready <= 1'b0;",

@@ -43,11 +43,15 @@ module fv_spec_stream #(
 );
     localparam L_W = `SPEC_L_W;
     localparam OUT_W = `SPEC_OUT_W;
-    localparam IW = 5;                                    // descriptor numbers (fewer than 2^IW in flight)
+    localparam NC = `SPEC_STREAM_LATENCY - 4;             // the pipeline's stages of ce (accumulator, datapath)
+    // descriptor numbers: fewer than 2^IW spans in flight. With LANES = 1 at most NC + 7 (one a position of the
+    // NC + 1 below, the output register, the skid buffer, R, prep, head and tail): 5 bits for patent mode's
+    // pipeline, 6 for pow mode's longer one (NC = 30 at formal.py's widths). LANES = 2 and 4 are bounded
+    // checks that accept fewer than 2^IW descriptors in their cycles.
+    localparam IW = (NC + 7 < 32) ? 5 : 6;
     localparam WW = 7;                                    // the no-deadlock counter
     localparam RESP = `SPEC_STREAM_LATENCY + 2;           // bound of the no-deadlock property
 
-    localparam NC = `SPEC_STREAM_LATENCY - 4;             // the pipeline's stages of ce (accumulator, datapath)
     localparam SH = (LANES == 4) ? 2 : (LANES == 2) ? 1 : 0;
     localparam QW = L_W - SH;                             // the span generator's beat counter
     localparam NG = (L_W > 4) ? (L_W - 4 + 3) / 4 : 1;    // spec_spangen's zero flags of l

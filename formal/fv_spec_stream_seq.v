@@ -3,7 +3,7 @@
 // yosys-smtbmc and z3 at the reduced widths of formal.py.
 //
 // The core is `fv_core_stream_seq`: rtl/spec_stream_seq.v at those widths, flattened, with the span generator's
-// registers, the datapath's valid and last flags (spec_datapath's valid pipeline and spec_delay's registers)
+// registers, the datapath's valid and last flags (spec_datapath's valid pipeline)
 // and the output's skid buffer made ports by Yosys `expose`; rtl/ is not edited. The datapath's pixel value is
 // cut off and left free (f_px): the properties are about flow control. Every input is free: the source may
 // raise and drop s_axis_tvalid as it likes, the sink's m_axis_tready is anything, rst_n is anything after
@@ -35,7 +35,7 @@ module fv_spec_stream_seq (
 );
     localparam L_W = `SPEC_L_W;
     localparam OUT_W = `SPEC_OUT_W;
-    localparam LAT = 12;                 // spec_datapath with PIPE = 0, INTERP = 0 (Format::datapath_latency)
+    localparam LAT = `SPEC_DATAPATH_LATENCY;   // spec_datapath with PIPE = 0 (Format::datapath_latency)
     localparam IW = 3;                   // descriptor numbers (at most three spans in flight)
     localparam RESP = LAT + 2;
 
@@ -45,19 +45,15 @@ module fv_spec_stream_seq (
     wire ready_q, run, ce, have_q, skid_v, skid_keep, skid_last;
     wire [L_W-1:0] cnt;
     wire [LAT:1] vs;                     // the datapath's valid flags (stage s: entered s clocks of ce ago)
-    wire [LAT-1:0] ls;                   // their last flags (spec_delay's r[s - 1] beside stage s)
+    wire [LAT:1] ls_q;                   // their last flags (stage s at bit s)
+    wire [LAT-1:0] ls = ls_q[LAT:1];     // ls[s - 1]: stage s's
     fv_core_stream_seq dut (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),
         .s_axis_tdata(s_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready),
         .m_axis_tdata(m_axis_tdata), .m_axis_tkeep(m_axis_tkeep), .m_axis_tlast(m_axis_tlast),
         .\dp_out.i (f_px), .dp_out(), .ready_q(ready_q), .run(run), .cnt(cnt), .ce(ce),
         .\u_dp.g_ctrl.vs_q (vs),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[0] (ls[0]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[1] (ls[1]),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[2] (ls[2]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[3] (ls[3]),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[4] (ls[4]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[5] (ls[5]),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[6] (ls[6]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[7] (ls[7]),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[8] (ls[8]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[9] (ls[9]),
-        .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[10] (ls[10]), .\u_dp.g_ctrl.u_last.genblk1.g_regs.r[11] (ls[11]),
+        .\u_dp.g_ctrl.ls_q (ls_q),
         .\u_out.have_q (have_q), .\u_out.skid_v (skid_v), .\u_out.skid_keep (skid_keep),
         .\u_out.skid_last (skid_last)
     );

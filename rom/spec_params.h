@@ -18,6 +18,17 @@ constexpr int INTERP_FRAC = 10;  // fraction bits of the position used by the in
 constexpr int DELTA_W = 10;  // width of the step field (with INTERP = 1)
 constexpr int DECODER_ROM = 0;  // 0: decoder 10's gates (Fig. 10) choose the table
 constexpr int TSEL_W = 2;  // ROM 12 table index width
+constexpr int POW = 0;  // 0: ROM 9 the scale, ROM 12 the cos^k tables (patent and tuned mode)
+constexpr int POW_SEG_W = 3;  // pow mode: 2^POW_SEG_W segments of the log table per side
+constexpr int POW_IDX_W = 6;  // pow mode: 2^POW_IDX_W entries per segment
+constexpr int POW_FRAC = 10;  // pow mode: fraction bits of the log table's interpolation
+constexpr int POW_VAL_W = 16;  // pow mode: the log table's value field
+constexpr int POW_DLT_W = 14;  // pow mode: the log table's step field (magnitude; a sign bit above it)
+constexpr int POW_SH_W = 5;  // pow mode: the log table's shift field: L = value * 2^-(POW_XB + shift)
+constexpr int POW_XB = 12;  // pow mode: the shift field's base
+constexpr int POW_YF = 18;  // pow mode: fraction bits of y = n * L
+constexpr int POW_YI = 5;  // pow mode: integer bits of y (y >= 2^POW_YI gives 0)
+constexpr int POW_K = 421657428;  // pow mode: pi/2 in the angle format, round(pi/2 * 2^ANG_FRAC)
 constexpr int DESC_W = 128;  // spec_stream: descriptor width (s_axis_tdata)
 constexpr int DESC_C_LSB = 0;  // spec_stream descriptor: C at [DESC_C_LSB +: C_W]
 constexpr int DESC_N_LSB = 16;  // spec_stream descriptor: n at [DESC_N_LSB +: N_W]

@@ -2,7 +2,7 @@
 // Default parameters of spec_unit and spec_stream, the descriptor layout and the latencies of this
 // configuration; the ROM images beside this file are made for them (the cores check at time 0).
 `ifdef SPEC_PARAMS_VH
-`ifndef SPEC_PARAMS_2e342a56
+`ifndef SPEC_PARAMS_c9e34e64
 // Two spec_params.vh of different configurations in one compilation: the first one's macros would win
 // silently. Put one configuration's directory on the include path; pass other configurations' values
 // as parameters of the instances (docs/interface.md, "Configurations").
@@ -10,7 +10,7 @@
 `endif
 `else
 `define SPEC_PARAMS_VH
-`define SPEC_PARAMS_2e342a56
+`define SPEC_PARAMS_c9e34e64
 `define SPEC_C_W 16  // register 1: C, UQ0.C_W
 `define SPEC_ANG_W 32  // registers 2, 3, 8: angle, two's complement radians
 `define SPEC_ANG_FRAC 28  // fraction bits of the angle
@@ -26,6 +26,17 @@
 `define SPEC_DELTA_W 10  // width of the step field (with INTERP = 1)
 `define SPEC_DECODER_ROM 0  // 0: decoder 10's gates (Fig. 10) choose the table
 `define SPEC_TSEL_W 2  // ROM 12 table index width
+`define SPEC_POW 0  // 0: ROM 9 the scale, ROM 12 the cos^k tables (patent and tuned mode)
+`define SPEC_POW_SEG_W 3  // pow mode: 2^POW_SEG_W segments of the log table per side
+`define SPEC_POW_IDX_W 6  // pow mode: 2^POW_IDX_W entries per segment
+`define SPEC_POW_FRAC 10  // pow mode: fraction bits of the log table's interpolation
+`define SPEC_POW_VAL_W 16  // pow mode: the log table's value field
+`define SPEC_POW_DLT_W 14  // pow mode: the log table's step field (magnitude; a sign bit above it)
+`define SPEC_POW_SH_W 5  // pow mode: the log table's shift field: L = value * 2^-(POW_XB + shift)
+`define SPEC_POW_XB 12  // pow mode: the shift field's base
+`define SPEC_POW_YF 18  // pow mode: fraction bits of y = n * L
+`define SPEC_POW_YI 5  // pow mode: integer bits of y (y >= 2^POW_YI gives 0)
+`define SPEC_POW_K 421657428  // pow mode: pi/2 in the angle format, round(pi/2 * 2^ANG_FRAC)
 `define SPEC_DESC_W 128  // spec_stream: descriptor width (s_axis_tdata)
 `define SPEC_DESC_C_LSB 0  // spec_stream descriptor: C at [DESC_C_LSB +: C_W]
 `define SPEC_DESC_N_LSB 16  // spec_stream descriptor: n at [DESC_N_LSB +: N_W]

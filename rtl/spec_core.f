@@ -13,7 +13,9 @@ spec_mul13.v
 spec_ldreg.v
 spec_add.v
 spec_delay.v
+spec_shr.v
 spec_datapath.v
+spec_powpath.v
 spec_saccum.v
 spec_ctrl.v
 spec_unit.v

@@ -10,7 +10,10 @@
 //   - a line is neither a word, a `//` comment nor blank (address lines `@...` are not supported).
 //   - HEADER = 9 or 12: the first line is not specrom's header of ROM 9 / ROM 12, or it names other parameters
 //     than H0..H4 (ROM 9: N_W, SCALE_W, SCALE_FRAC, DECODER_ROM, TSEL_W; ROM 12: TBL_AW, TSEL_W, TBL_FRAC, INTERP,
-//     DELTA_W; -1: any value) - the parameters the image was made for, which specrom writes there.
+//     DELTA_W; -1: any value) - the parameters the image was made for, which specrom writes there;
+//     with POW = 1 (pow mode's tables, docs/pow.md) ROM 9's line names ANG_FRAC, POW_K, POW_SEG_W, POW_IDX_W,
+//     POW_VAL_W, POW_DLT_W, POW_SH_W, POW_XB (H0..H7) and ROM 12's TBL_AW, TBL_FRAC, INTERP, DELTA_W (H0..H3);
+//     an image of the other mode (a pow image in a core with POW = 0, or the other way round) is named as such.
 // Synthesis tools define SYNTHESIS and skip these checks; the project's synthesis flows run syn/rom_check.py
 // on the images before Yosys reads them.
 `timescale 1ns / 1ps
@@ -20,11 +23,15 @@ module spec_rom #(
     parameter DW = 18,
     parameter INIT_FILE = "",
     parameter HEADER = 0,    // 0: no header line expected; 9, 12: specrom's header of ROM 9 / ROM 12
+    parameter POW = 0,       // HEADER 9, 12: 1 for pow mode's images (the log table, the exp2 table)
     parameter H0 = -1,
     parameter H1 = -1,
     parameter H2 = -1,
     parameter H3 = -1,
-    parameter H4 = -1
+    parameter H4 = -1,
+    parameter H5 = -1,
+    parameter H6 = -1,
+    parameter H7 = -1
 ) (
     input  wire          clk,
     input  wire          en,
@@ -40,8 +47,10 @@ module spec_rom #(
     localparam DIGITS = (DW + 3) / 4;
     localparam LINE_CHARS = 48;   // a word line fits; longer (comment) lines are read in pieces
     localparam HEAD_CHARS = 256;
-    integer fd, got, lineno, words, pos, digits, first, f0, f1, f2, f3, f4;
-    reg [8*HEAD_CHARS-1:0] hline;
+    integer fd, got, nf, kind_pow, kind_cos, rom_no, lineno, words, pos, digits, first, f0, f1, f2, f3, f4, f5, f6, f7;
+    reg [8*HEAD_CHARS-1:0] hline, hword;   // hword: the other mode's line's first field (read, not used)
+    wire unused_hword;
+    assign unused_hword = &{1'b0, hword};
     reg [8*LINE_CHARS-1:0] line;
     reg [7:0] ch;
     reg [63:0] value;
@@ -59,21 +68,55 @@ module spec_rom #(
             hline = {8 * HEAD_CHARS{1'b0}};
             got = $fgets(hline, fd);
             if (got > 0) hline = hline | ({HEAD_CHARS{8'h20}} << (8 * got));  // blanks, not NULs, above
-            if (HEADER == 9)
+            f5 = -1;
+            f6 = -1;
+            f7 = -1;
+            if (HEADER == 9 && POW == 0) begin
+                nf = 5;
                 got = $sscanf(hline, " // specrom ROM 9: n_w=%d scale_w=%d scale_frac=%d decoder_rom=%d tsel_w=%d",
                               f0, f1, f2, f3, f4);
-            else
+            end else if (HEADER == 12 && POW == 0) begin
+                nf = 5;
                 got = $sscanf(hline, " // specrom ROM 12: tbl_aw=%d tsel_w=%d tbl_frac=%d interp=%d delta_w=%d",
                               f0, f1, f2, f3, f4);
-            if (got != 5) begin
-                $display("spec_rom: ROM image '%0s' does not start with specrom's ROM %0d line: make it with specrom (%m)",
-                         INIT_FILE, HEADER);
+            end else if (HEADER == 9) begin
+                nf = 8;
+                got = $sscanf(hline,
+                              " // specrom ROM 9 pow: ang_frac=%d half_pi=%d seg_w=%d idx_w=%d val_w=%d dlt_w=%d sh_w=%d xb=%d",
+                              f0, f1, f2, f3, f4, f5, f6, f7);
+            end else begin
+                nf = 4;
+                f4 = -1;
+                got = $sscanf(hline, " // specrom ROM 12 pow: tbl_aw=%d tbl_frac=%d interp=%d delta_w=%d", f0, f1, f2, f3);
+            end
+            if (got != nf) begin
+                // an image of the other mode: its ROM's line with (or without) "pow"
+                kind_pow = $sscanf(hline, " // specrom ROM %d pow: %s", rom_no, hword);
+                if (kind_pow != 2) kind_cos = $sscanf(hline, " // specrom ROM %d: %s", rom_no, hword);
+                else kind_cos = 0;
+                if (POW == 0 && kind_pow == 2 && rom_no == HEADER)
+                    $display("spec_rom: ROM image '%0s' was made for pow mode (specrom --mode pow), but this core has POW = 0: pass POW = 1 and pow mode's parameters, or patent/tuned images (%m)",
+                             INIT_FILE);
+                else if (POW != 0 && kind_cos == 2 && rom_no == HEADER)
+                    $display("spec_rom: ROM image '%0s' was made for patent or tuned mode, but this core has POW = 1: pass the images of specrom --mode pow (%m)",
+                             INIT_FILE);
+                else
+                    $display("spec_rom: ROM image '%0s' does not start with specrom's ROM %0d line%0s: make it with specrom (%m)",
+                             INIT_FILE, HEADER, (POW != 0) ? " of pow mode" : "");
                 $fatal(1);
             end
             if ((H0 >= 0 && f0 != H0) || (H1 >= 0 && f1 != H1) || (H2 >= 0 && f2 != H2) || (H3 >= 0 && f3 != H3) ||
-                (H4 >= 0 && f4 != H4)) begin
+                (H4 >= 0 && f4 != H4) || (H5 >= 0 && f5 != H5) || (H6 >= 0 && f6 != H6) || (H7 >= 0 && f7 != H7)) begin
                 $display("spec_rom: ROM image '%0s' was made for other parameters (%m):", INIT_FILE);
-                if (HEADER == 9) begin
+                if (HEADER == 9 && POW != 0) begin
+                    $display("spec_rom:   image ANG_FRAC=%0d POW_K=%0d POW_SEG_W=%0d POW_IDX_W=%0d POW_VAL_W=%0d POW_DLT_W=%0d POW_SH_W=%0d POW_XB=%0d",
+                             f0, f1, f2, f3, f4, f5, f6, f7);
+                    $display("spec_rom:   core  ANG_FRAC=%0d POW_K=%0d POW_SEG_W=%0d POW_IDX_W=%0d POW_VAL_W=%0d POW_DLT_W=%0d POW_SH_W=%0d POW_XB=%0d",
+                             H0, H1, H2, H3, H4, H5, H6, H7);
+                end else if (POW != 0) begin
+                    $display("spec_rom:   image TBL_AW=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d", f0, f1, f2, f3);
+                    $display("spec_rom:   core  TBL_AW=%0d TBL_FRAC=%0d INTERP=%0d DELTA_W=%0d", H0, H1, H2, H3);
+                end else if (HEADER == 9) begin
                     $display("spec_rom:   image N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",
                              f0, f1, f2, f3, f4);
                     $display("spec_rom:   core  N_W=%0d SCALE_W=%0d SCALE_FRAC=%0d DECODER_ROM=%0d TSEL_W=%0d",

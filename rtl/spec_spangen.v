@@ -35,6 +35,7 @@ module spec_spangen #(
     parameter SCALE_FRAC = 15,
     parameter DECODER_ROM = 0,
     parameter TSEL_W = 2,
+    parameter POW = 0,          // 1: pow mode: the span's "scale" is n itself (SCALE_W = N_W); ROM 9 is per pixel
     parameter ROM9_FILE = "",
     parameter DESC_W = 128,
     parameter DESC_C_LSB = 0,
@@ -205,17 +206,30 @@ module spec_spangen #(
     assign {prep_c, prep_gate_tsel, prep_zeta0, prep_dzeta, prep_d3, prep_lr, prep_nlqm1, prep_nlqm2, prep_lq0,
             prep_lq1, prep_lq2p} = prep_q;
     // ROM 9, read as the descriptor moves into prep: its word is prep's scale (and, with DECODER_ROM = 1, its
-    // table) while prep holds it
+    // table) while prep holds it. POW = 1: n itself, in a register loaded at the same time (ROM 9 is the log
+    // table, read per pixel in spec_powpath).
     wire [SCALE_W-1:0] prep_scale;
     wire [TSEL_W-1:0] prep_rom_tsel;
-    spec_rom9 #(
-        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
-        .INIT_FILE(ROM9_FILE)
-    ) u_rom9 (
-        .clk(clk), .en(prep_load), .n(head_n), .scale(prep_scale), .table_sel(prep_rom_tsel)
-    );
     wire [TSEL_W-1:0] prep_tsel;
     generate
+        if (POW != 0) begin : g_pow_n
+            reg [SCALE_W-1:0] n_q;
+            always @(posedge clk) if (prep_load) n_q <= head_n;
+            assign prep_scale = n_q;
+            assign prep_rom_tsel = {TSEL_W{1'b0}};
+            if (SCALE_W != N_W) begin : g_w
+                spec_parameter_error_spangen_POW_needs_SCALE_W_equal_N_W check_spec_stream ();
+            end
+            wire unused_pow;
+            assign unused_pow = &{1'b0, SCALE_FRAC[0]};
+        end else begin : g_rom9
+            spec_rom9 #(
+                .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
+                .INIT_FILE(ROM9_FILE)
+            ) u_rom9 (
+                .clk(clk), .en(prep_load), .n(head_n), .scale(prep_scale), .table_sel(prep_rom_tsel)
+            );
+        end
         if (DECODER_ROM != 0) begin : g_dec_rom
             assign prep_tsel = prep_rom_tsel;
             wire unused_gates;

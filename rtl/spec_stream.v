@@ -1,7 +1,9 @@
 // spec_stream - the UA 71489 datapath as a streaming core: LANES pixels per clock (1, 2 or 4), span
 // descriptors in through an AXI4-Stream sink, pixels out through an AXI4-Stream source. Same datapath modules
 // as spec_unit (ROM 9, decoder 10, adder 6 / register 8, multiplier 11, ROM 12, multiplier 13), the same
-// pixels bit for bit and in the same order for every LANES.
+// pixels bit for bit and in the same order for every LANES. POW = 1 (pow mode, docs/pow.md): each lane's
+// datapath is spec_powpath (ROM 9 the log table, read per pixel; multiplier 11 by n; ROM 12 exp2), and n travels
+// beside the pixels where ROM 9's scale does otherwise; the same ports, descriptor and rules.
 //
 // Descriptor (s_axis_tdata, DESC_W bits; the layout is the generator's, rom/spec_params.vh; bits outside the
 // fields are ignored). Default widths: C [15:0], n [25:16], l [47:32], zeta0 [95:64], dzeta [127:96], 128 bits.
@@ -26,10 +28,11 @@
 // boundaries: the next descriptors wait in a three-entry buffer while the current span runs.
 // Latency: a descriptor accepted in cycle a (core idle) gives its first beat in cycle
 // a + 4 + ACC + LAT = a + `SPEC_STREAM_LATENCY: buffer and span generator (spec_spangen, 3), accumulator
-// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 18 with INTERP = 1), output
-// register. Backpressure: every pipeline stage advances only when the output register's skid buffer is
-// empty (a register: no combinational path from m_axis_tready); m_axis_tvalid, m_axis_tdata, m_axis_tkeep and
-// m_axis_tlast are registers and hold until accepted. s_axis_tready is a register too: 1 while the descriptor
+// (spec_saccum, ACC = 8), datapath (spec_datapath with PIPE = 1, LAT = 14; 18 with INTERP = 1; POW = 1:
+// spec_powpath with PIPE = 1, LAT = 27, 30 with INTERP = 1), output register. Backpressure: every pipeline
+// stage advances only when the output register's skid buffer is empty (a register: no combinational path from
+// m_axis_tready); m_axis_tvalid, m_axis_tdata, m_axis_tkeep and m_axis_tlast are registers and hold until
+// accepted. s_axis_tready is a register too: 1 while the descriptor
 // buffer's last entry is free.
 // Reset: rst_n is synchronous, active low. At an edge where it is 0 the buffer, the span generator, the
 // pipeline's valid flags and the output registers are cleared: m_axis_tvalid = 0 (and tdata, tlast = 0) from
@@ -59,6 +62,17 @@ module spec_stream #(
     parameter DELTA_W = `SPEC_DELTA_W,
     parameter DECODER_ROM = `SPEC_DECODER_ROM,  // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
     parameter TSEL_W = `SPEC_TSEL_W,            // ROM 12 table index width (2 with DECODER_ROM = 0)
+    parameter POW = `SPEC_POW,                  // 1: pow mode (ROM 9 the log table, spec_powpath; docs/pow.md)
+    parameter POW_SEG_W = `SPEC_POW_SEG_W,
+    parameter POW_IDX_W = `SPEC_POW_IDX_W,
+    parameter POW_FRAC = `SPEC_POW_FRAC,
+    parameter POW_VAL_W = `SPEC_POW_VAL_W,
+    parameter POW_DLT_W = `SPEC_POW_DLT_W,
+    parameter POW_SH_W = `SPEC_POW_SH_W,
+    parameter POW_XB = `SPEC_POW_XB,
+    parameter POW_YF = `SPEC_POW_YF,
+    parameter POW_YI = `SPEC_POW_YI,
+    parameter POW_K = `SPEC_POW_K,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter DESC_W = `SPEC_DESC_W,
@@ -87,7 +101,9 @@ module spec_stream #(
     spec_param_check #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
-        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .POW_SEG_W(POW_SEG_W),
+        .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC), .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W),
+        .POW_XB(POW_XB), .POW_YF(POW_YF), .POW_YI(POW_YI), .POW_K(POW_K)
     ) u_check ();
     // the descriptor's fields lie inside DESC_W and do not overlap
     spec_desc_check #(
@@ -109,15 +125,17 @@ module spec_stream #(
 
     // ---- descriptor buffer and span generator: beats of LANES slots ---------------------------------------
     localparam OW = ANG_W + 2;
+    // the span's ROM 9 word beside its pixels: the scale, or in pow mode n (ROM 9 is read per pixel there)
+    localparam SW = (POW != 0) ? N_W : SCALE_W;
     wire [LANES-1:0] b_valid, b_first, b_last;
     wire [LANES*C_W-1:0] b_c;
-    wire [LANES*SCALE_W-1:0] b_scale;
+    wire [LANES*SW-1:0] b_scale;
     wire [LANES*TSEL_W-1:0] b_tsel;
     wire [LANES*ANG_W-1:0] b_zeta0;
     wire [LANES*OW-1:0] b_offs, b_step;
     spec_spangen #(
-        .LANES(LANES), .PACK(PACK), .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .SCALE_W(SCALE_W),
-        .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .ROM9_FILE(ROM9_FILE),
+        .LANES(LANES), .PACK(PACK), .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .SCALE_W(SW),
+        .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .ROM9_FILE(ROM9_FILE),
         .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB), .DESC_N_LSB(DESC_N_LSB), .DESC_L_LSB(DESC_L_LSB),
         .DESC_ZETA0_LSB(DESC_ZETA0_LSB), .DESC_DZETA_LSB(DESC_DZETA_LSB), .OW(OW)
     ) u_gen (
@@ -130,7 +148,11 @@ module spec_stream #(
     // ---- the slots' flags (valid, last), from the beat to the output: NC stages of ce ------------------------
     localparam SEG = 12;
     localparam ACC = (ANG_W + L_W + SEG - 1) / SEG + 4;            // spec_saccum's stages
-    localparam LAT = 14 + ((INTERP != 0) ? 4 : 0);                  // spec_datapath's stages (PIPE = 1)
+    // spec_datapath's stages (PIPE = 1), or spec_powpath's (Format::pow_latency)
+    localparam LAT_COSK = 14 + ((INTERP != 0) ? 4 : 0);
+    localparam LAT_POW = 3 + POW_SEG_W + 3 + 3 + 3 + (POW_SH_W + 1) / 2 + ((INTERP != 0) ? 0 : 1) +
+                         ((INTERP != 0) ? 3 : 2) + ((INTERP != 0) ? 3 : 0) + POW_YI / 2 + 4;
+    localparam LAT = (POW != 0) ? LAT_POW : LAT_COSK;
     localparam NC = ACC + LAT;
     reg [NC*LANES-1:0] ctl_v, ctl_l;    // stage k (1 .. NC) of slot j at [(k-1)*LANES + j]
     always @(posedge clk) begin
@@ -154,24 +176,38 @@ module spec_stream #(
                 .clk(clk), .ce(ce), .first(b_first[j]), .zeta0(b_zeta0[j*ANG_W +: ANG_W]),
                 .offs(b_offs[j*OW +: OW]), .step(b_step[j*OW +: OW]), .angle(angle8)
             );
-            // the slot's C, scale and table, delayed to meet its angle
+            // the slot's C, scale (pow mode: n) and table, delayed to meet its angle
             wire [C_W-1:0] c8;
-            wire [SCALE_W-1:0] scale8;
+            wire [SW-1:0] scale8;
             wire [TSEL_W-1:0] tsel8;
-            spec_delay #(.W(C_W + SCALE_W + TSEL_W), .N(ACC), .RAM(DELAY_RAM)) u_side8 (
+            spec_delay #(.W(C_W + SW + TSEL_W), .N(ACC), .RAM(DELAY_RAM)) u_side8 (
                 .clk(clk), .ce(ce),
-                .d({b_c[j*C_W +: C_W], b_scale[j*SCALE_W +: SCALE_W], b_tsel[j*TSEL_W +: TSEL_W]}),
+                .d({b_c[j*C_W +: C_W], b_scale[j*SW +: SW], b_tsel[j*TSEL_W +: TSEL_W]}),
                 .q({c8, scale8, tsel8})
             );
+            // the datapath's scale (patent and tuned mode) or n (pow mode)
+            wire [SCALE_W-1:0] scale_dp;
+            wire [N_W-1:0] n_dp;
+            if (POW != 0) begin : g_pow
+                assign scale_dp = {SCALE_W{1'b0}};
+                assign n_dp = scale8;
+                wire unused_tsel;
+                assign unused_tsel = &{1'b0, tsel8};
+            end else begin : g_cosk
+                assign scale_dp = scale8;
+                assign n_dp = {N_W{1'b0}};
+            end
             wire dp_valid_unused, dp_next_unused, dp_last_unused, dp_busy_unused;
             spec_datapath #(
                 .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
                 .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
                 .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .PIPE(1), .CTRL(0),
-                .DELAY_RAM(DELAY_RAM), .ROM12_FILE(ROM12_FILE)
+                .DELAY_RAM(DELAY_RAM), .N_W(N_W), .POW(POW), .POW_SEG_W(POW_SEG_W), .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC),
+                .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W), .POW_XB(POW_XB), .POW_YF(POW_YF),
+                .POW_YI(POW_YI), .POW_K(POW_K), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
             ) u_dp (
                 .clk(clk), .rst(rst), .ce(ce), .in_valid(1'b0), .in_last(1'b0), .angle(angle8),
-                .scale(scale8), .table_sel(tsel8), .c(c8), .out(dp_out[j*OUT_W +: OUT_W]),
+                .scale(scale_dp), .table_sel(tsel8), .n(n_dp), .c(c8), .out(dp_out[j*OUT_W +: OUT_W]),
                 .out_valid(dp_valid_unused), .out_valid_next(dp_next_unused), .out_last(dp_last_unused),
                 .busy(dp_busy_unused)
             );

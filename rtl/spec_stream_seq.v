@@ -10,12 +10,15 @@
 // zeta0 [DESC_ZETA0_LSB +: ANG_W], dzeta [DESC_DZETA_LSB +: ANG_W]; fields outside DESC_W or overlapping stop
 // elaboration (spec_desc_check), as do the datapath's parameter rules (spec_param_check).
 // Pixels: m_axis_tdata = the intensity (UQ0.OUT_W), m_axis_tkeep = 1, m_axis_tlast = 1 on a span's last pixel.
+// POW = 1 (pow mode, docs/pow.md): the datapath is spec_powpath and the span's n waits in a register where ROM 9's
+// word does otherwise.
 // Angles: pixel k of a span has register 8 = zeta0 + k * dzeta, saturated step by step at the format's ends
 // (spec_accum), as spec_unit and the model (Model::angles); spec_stream's clamp of the exact sum gives the same
 // values (spec_saccum), so the pixels are spec_stream's.
 //
 // Timing: a descriptor accepted in cycle a gives its first pixel (m_axis_tvalid) in cycle a + LAT + 2 (LAT =
-// spec_datapath's latency with PIPE = 0: 12, 14 with INTERP = 1; Format::stream_seq_latency()): the span
+// spec_datapath's latency with PIPE = 0: 12, 14 with INTERP = 1; POW = 1: spec_powpath's, 23, 24 with INTERP = 1;
+// Format::stream_seq_latency()): the span
 // registers and ROM 9 (1), the datapath (LAT), the output register (1). Throughput: one pixel per clock
 // within a span while m_axis_tready = 1; a descriptor is taken only when the previous span's last pixel has
 // left the datapath (C and the table it reads are the next span's from then on), so spans start at most every
@@ -46,6 +49,17 @@ module spec_stream_seq #(
     parameter DELTA_W = `SPEC_DELTA_W,
     parameter DECODER_ROM = `SPEC_DECODER_ROM,  // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
     parameter TSEL_W = `SPEC_TSEL_W,            // ROM 12 table index width (2 with DECODER_ROM = 0)
+    parameter POW = `SPEC_POW,                  // 1: pow mode (ROM 9 the log table, spec_powpath; docs/pow.md)
+    parameter POW_SEG_W = `SPEC_POW_SEG_W,
+    parameter POW_IDX_W = `SPEC_POW_IDX_W,
+    parameter POW_FRAC = `SPEC_POW_FRAC,
+    parameter POW_VAL_W = `SPEC_POW_VAL_W,
+    parameter POW_DLT_W = `SPEC_POW_DLT_W,
+    parameter POW_SH_W = `SPEC_POW_SH_W,
+    parameter POW_XB = `SPEC_POW_XB,
+    parameter POW_YF = `SPEC_POW_YF,
+    parameter POW_YI = `SPEC_POW_YI,
+    parameter POW_K = `SPEC_POW_K,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter DESC_W = `SPEC_DESC_W,
@@ -71,7 +85,9 @@ module spec_stream_seq #(
     spec_param_check #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
-        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .POW_SEG_W(POW_SEG_W),
+        .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC), .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W),
+        .POW_XB(POW_XB), .POW_YF(POW_YF), .POW_YI(POW_YI), .POW_K(POW_K)
     ) u_check ();
     spec_desc_check #(
         .C_W(C_W), .N_W(N_W), .L_W(L_W), .ANG_W(ANG_W), .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB),
@@ -126,28 +142,6 @@ module spec_stream_seq #(
             ready_q <= ~accept & ~run & ~dp_busy;
         end
     end
-    // ROM 9, read as the descriptor is accepted: its word is the span's scale (and, DECODER_ROM = 1, its table)
-    wire [SCALE_W-1:0] scale9;
-    wire [TSEL_W-1:0] rom_tsel;
-    spec_rom9 #(
-        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
-        .INIT_FILE(ROM9_FILE)
-    ) u_rom9 (
-        .clk(clk), .en(accept), .n(d_n), .scale(scale9), .table_sel(rom_tsel)
-    );
-    wire [TSEL_W-1:0] table_sel;
-    generate
-        if (DECODER_ROM != 0) begin : g_dec_rom
-            assign table_sel = rom_tsel;
-            wire unused_gates;
-            assign unused_gates = &{1'b0, gate_tsel_q};
-        end else begin : g_dec_gates
-            assign table_sel = gate_tsel_q;
-            wire unused_rom;
-            assign unused_rom = &{1'b0, rom_tsel};
-        end
-    endgenerate
-
     // ---- adder 6 / register 8: zeta0 as the descriptor is accepted, + dzeta (saturating) per pixel taken -------
     wire [ANG_W-1:0] angle8;
     spec_accum #(.W(ANG_W)) u_acc678 (
@@ -155,17 +149,54 @@ module spec_stream_seq #(
         .angle(angle8)
     );
 
-    // ---- multiplier 11, ROM 12, [interpolator], multiplier 13 ------------------------------------------------
+    // ---- ROM 9, read as the descriptor is accepted: its word is the span's scale (and, DECODER_ROM = 1, its
+    // table). POW = 1: n in a register loaded then (ROM 9 is the log table, read per pixel in the datapath).
+    wire [SCALE_W-1:0] scale9;
+    wire [TSEL_W-1:0] table_sel;
+    wire [N_W-1:0] n_dp;
+    generate
+        if (POW != 0) begin : g_pow
+            reg [N_W-1:0] n_q;
+            always @(posedge clk) if (accept) n_q <= d_n;
+            assign n_dp = n_q;
+            assign scale9 = {SCALE_W{1'b0}};
+            assign table_sel = {TSEL_W{1'b0}};
+            wire unused_gates;
+            assign unused_gates = &{1'b0, gate_tsel_q};
+        end else begin : g_rom9
+            wire [TSEL_W-1:0] rom_tsel;
+            spec_rom9 #(
+                .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
+                .INIT_FILE(ROM9_FILE)
+            ) u_rom9 (
+                .clk(clk), .en(accept), .n(d_n), .scale(scale9), .table_sel(rom_tsel)
+            );
+            assign n_dp = {N_W{1'b0}};
+            if (DECODER_ROM != 0) begin : g_dec_rom
+                assign table_sel = rom_tsel;
+                wire unused_gates;
+                assign unused_gates = &{1'b0, gate_tsel_q};
+            end else begin : g_dec_gates
+                assign table_sel = gate_tsel_q;
+                wire unused_rom;
+                assign unused_rom = &{1'b0, rom_tsel};
+            end
+        end
+    endgenerate
+
+    // ---- multiplier 11, ROM 12, [interpolator], multiplier 13 (pow mode: spec_powpath's value) ---------------
     wire [OUT_W-1:0] dp_out;
     wire dp_valid, dp_valid_next, dp_last;
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
         .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .PIPE(0), .CTRL(1), .SIDE(0),
-        .ROM12_FILE(ROM12_FILE)
+        .N_W(N_W), .POW(POW), .POW_SEG_W(POW_SEG_W), .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC),
+        .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W), .POW_XB(POW_XB), .POW_YF(POW_YF),
+        .POW_YI(POW_YI), .POW_K(POW_K), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
         .clk(clk), .rst(rst), .ce(ce), .in_valid(run), .in_last(last), .angle(angle8), .scale(scale9),
-        .table_sel(table_sel), .c(c_q), .out(dp_out), .out_valid(dp_valid), .out_valid_next(dp_valid_next),
+        .table_sel(table_sel), .n(n_dp), .c(c_q), .out(dp_out), .out_valid(dp_valid), .out_valid_next(dp_valid_next),
         .out_last(dp_last), .busy(dp_busy)
     );
 

@@ -1,5 +1,6 @@
 // spec_unit - the device of UA 71489 (Romanyuk & Chornyi, 2004), Fig. 1: intensity of the specular
-// component C * cos^k(sqrt(n/k) * angle) along a scanline, one pixel per two clocks.
+// component C * cos^k(sqrt(n/k) * angle) along a scanline, one pixel per two clocks (POW = 1: C * cos^n(angle)
+// as exp2(n log2 cos), spec_powpath, docs/pow.md).
 // (spec_stream is the one-pixel-per-clock variant on the same datapath.)
 //
 // Reference numerals in comments are the patent's. Formats (defaults from rom/spec_params.vh):
@@ -13,9 +14,10 @@
 // one span. A span runs the registers as they are: a Start without a new load of counter 5 runs the last
 // loaded l again (a length register keeps it), never the 2^L_W pixels of a counter left at its maximum.
 // Timing (see docs/interface.md): with Start rising in cycle t, busy_o is 1 from t+1; pixel i's valid_o pulse
-// is in cycle t + `SPEC_UNIT_FIRST_PIXEL + 2i (15 + 2i; 17 + 2i with INTERP = 1); busy_o falls in the cycle
-// after the last valid_o. Start, register writes and counter loads are ignored while busy_o is 1; init_n = 0
-// at a clock edge returns to idle (busy_o = 0, valid_o = 0 from the next cycle) and clears every register.
+// is in cycle t + `SPEC_UNIT_FIRST_PIXEL + 2i (15 + 2i; 17 + 2i with INTERP = 1; pow mode 26 + 2i, 27 + 2i);
+// busy_o falls in the cycle after the last valid_o. Start, register writes and counter loads are ignored while
+// busy_o is 1; init_n = 0 at a clock edge returns to idle (busy_o = 0, valid_o = 0 from the next cycle) and clears
+// every register.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "spec_params.vh"
@@ -35,6 +37,17 @@ module spec_unit #(
     parameter DELTA_W = `SPEC_DELTA_W,
     parameter DECODER_ROM = `SPEC_DECODER_ROM,  // 1: ROM 9's word carries the table (tuned mode); 0: Fig. 10 gates
     parameter TSEL_W = `SPEC_TSEL_W,            // ROM 12 table index width (2 with DECODER_ROM = 0)
+    parameter POW = `SPEC_POW,                  // 1: pow mode (ROM 9 the log table, spec_powpath; docs/pow.md)
+    parameter POW_SEG_W = `SPEC_POW_SEG_W,
+    parameter POW_IDX_W = `SPEC_POW_IDX_W,
+    parameter POW_FRAC = `SPEC_POW_FRAC,
+    parameter POW_VAL_W = `SPEC_POW_VAL_W,
+    parameter POW_DLT_W = `SPEC_POW_DLT_W,
+    parameter POW_SH_W = `SPEC_POW_SH_W,
+    parameter POW_XB = `SPEC_POW_XB,
+    parameter POW_YF = `SPEC_POW_YF,
+    parameter POW_YI = `SPEC_POW_YI,
+    parameter POW_K = `SPEC_POW_K,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE
 ) (
@@ -61,7 +74,9 @@ module spec_unit #(
     spec_param_check #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
-        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W)
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .POW_SEG_W(POW_SEG_W),
+        .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC), .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W),
+        .POW_XB(POW_XB), .POW_YF(POW_YF), .POW_YI(POW_YI), .POW_K(POW_K)
     ) u_check ();
 
     // Start (26) on its rising edge: flip-flop 39 is clocked by Start in the patent. start_q is Start one clock
@@ -128,41 +143,52 @@ module spec_unit #(
 
     // ROM 9 and decoder 10 (both follow register 4; ROM 9 one clock later, ready long before the first pixel).
     // DECODER_ROM = 1: the table comes from ROM 9's word (decoder 10 as a ROM), the gates' one-hot lines
-    // 30..33 stay observable.
-    wire [SCALE_W-1:0] scale9;
-    wire [TSEL_W-1:0] rom_tsel;
-    spec_rom9 #(
-        .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
-        .INIT_FILE(ROM9_FILE)
-    ) u_rom9 (
-        .clk(clk), .en(1'b1), .n(n_q), .scale(scale9), .table_sel(rom_tsel)
-    );
+    // 30..33 stay observable. POW = 1: ROM 9 is the log table inside the datapath (spec_powpath), read every pixel
+    // at register 8's angle, and multiplier 11 there takes register 4's n; the gates' lines stay observable.
     wire [1:0] gate_tsel;
     spec_decoder #(.N_W(N_W)) u_dec10 (
         .n(n_q), .d30(d30), .d31(d31), .d32(d32), .d33(d33), .table_sel(gate_tsel)
     );
+    wire [SCALE_W-1:0] scale9;
     wire [TSEL_W-1:0] table_sel;
     generate
-        if (DECODER_ROM != 0) begin : g_dec_rom
-            assign table_sel = rom_tsel;
+        if (POW != 0) begin : g_pow
+            assign scale9 = {SCALE_W{1'b0}};
+            assign table_sel = {TSEL_W{1'b0}};
             wire unused_gates;
             assign unused_gates = &{1'b0, gate_tsel};
-        end else begin : g_dec_gates
-            assign table_sel = gate_tsel;
-            wire unused_rom;
-            assign unused_rom = &{1'b0, rom_tsel};
+        end else begin : g_rom9
+            wire [TSEL_W-1:0] rom_tsel;
+            spec_rom9 #(
+                .N_W(N_W), .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W),
+                .INIT_FILE(ROM9_FILE)
+            ) u_rom9 (
+                .clk(clk), .en(1'b1), .n(n_q), .scale(scale9), .table_sel(rom_tsel)
+            );
+            if (DECODER_ROM != 0) begin : g_dec_rom
+                assign table_sel = rom_tsel;
+                wire unused_gates;
+                assign unused_gates = &{1'b0, gate_tsel};
+            end else begin : g_dec_gates
+                assign table_sel = gate_tsel;
+                wire unused_rom;
+                assign unused_rom = &{1'b0, rom_tsel};
+            end
         end
     endgenerate
 
-    // Multiplier 11, ROM 12, [interpolator], multiplier 13
+    // Multiplier 11, ROM 12, [interpolator], multiplier 13 (pow mode: the log table, multiplier 11 by n, ROM 12
+    // exp2, the shift, multiplier 13)
     wire out_last_unused, out_next_unused;
     spec_datapath #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP),
-        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .ROM12_FILE(ROM12_FILE)
+        .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W), .TSEL_W(TSEL_W), .N_W(N_W), .POW(POW), .POW_SEG_W(POW_SEG_W), .POW_IDX_W(POW_IDX_W), .POW_FRAC(POW_FRAC),
+        .POW_VAL_W(POW_VAL_W), .POW_DLT_W(POW_DLT_W), .POW_SH_W(POW_SH_W), .POW_XB(POW_XB), .POW_YF(POW_YF),
+        .POW_YI(POW_YI), .POW_K(POW_K), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_dp (
         .clk(clk), .rst(rst), .ce(1'b1), .in_valid(fresh8), .in_last(1'b0), .angle(angle8), .scale(scale9),
-        .table_sel(table_sel), .c(c_q), .out(intensity_o), .out_valid(valid_o),
+        .table_sel(table_sel), .n(n_q), .c(c_q), .out(intensity_o), .out_valid(valid_o),
         .out_valid_next(out_next_unused), .out_last(out_last_unused), .busy(dp_busy)
     );
 endmodule

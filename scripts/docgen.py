@@ -78,7 +78,8 @@ class Facts:
             if config == "default":
                 return os.path.join(ROOT, "rom")
             args = {"tuned": ["--mode", "tuned"], "up5k": ["--config", "up5k"],
-                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"]}.get(config)
+                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"], "pow": ["--mode", "pow"],
+                    "up5k_pow": ["--config", "up5k", "--mode", "pow"]}.get(config)
             if args is None:
                 raise DocError("unknown configuration %s" % config)
             d = tempfile.mkdtemp(prefix="docgen_")
@@ -107,10 +108,16 @@ class Facts:
                 raise DocError("no ROM %s" % rom)
             image, params = names[rom]
             sets = " ".join("-set %s %d" % (p, h[p]) for p in params)
+            if h["POW"]:   # pow mode's ROMs are spec_rom inside spec_powpath: its address and word widths
+                top = "spec_rom"
+                aw, dw = ((1 + h["POW_SEG_W"] + h["POW_IDX_W"], h["POW_SH_W"] + 1 + h["POW_DLT_W"] + h["POW_VAL_W"])
+                          if rom == "9" else (h["TBL_AW"], h["TBL_DW"] + (h["DELTA_W"] if h["INTERP"] else 0)))
+                sets = "-set AW %d -set DW %d" % (aw, dw)
             d = tempfile.mkdtemp(prefix="docgen_")
             stat = os.path.join(d, "stat.txt")
-            self.run(["yosys", "-q", "-p", 'read_verilog -defer rtl/spec_rom.v rtl/%s.v; chparam -set INIT_FILE "%s" %s %s; '
-                      'synth_ice40 -top %s; tee -q -o %s stat' % (top, os.path.join(self.rom_dir(config), image), sets,
+            files = "rtl/spec_rom.v" + ("" if top == "spec_rom" else " rtl/%s.v" % top)
+            self.run(["yosys", "-q", "-p", 'read_verilog -defer %s; chparam -set INIT_FILE "%s" %s %s; '
+                      'synth_ice40 -top %s; tee -q -o %s stat' % (files, os.path.join(self.rom_dir(config), image), sets,
                                                                  top, top, stat)])
             m = re.search(r"SB_RAM40_4K\s+(\d+)", open(stat).read())
             return int(m.group(1)) if m else 0
@@ -143,8 +150,9 @@ class Facts:
         return self.once("render." + variant, make)
 
     def compare(self):
-        """`specsim compare`: its two tables (rel: worst relative error in the epicentre, abs: worst absolute / C),
-        rows by label; and the text."""
+        """`specsim compare`: its three tables (rel: worst relative error in the epicentre, abs: worst absolute / C,
+        side: the choices side by side in fixed point, with the per-material table, ROM bits and a material
+        change's cost), rows by label; and the text."""
         def make():
             out = self.run([self.specsim, "compare"])
             tables, cur = [], None
@@ -155,9 +163,9 @@ class Facts:
                 elif line.startswith("| ") and cur is not None:
                     cells = [c.strip() for c in line.strip().strip("|").split("|")]
                     cur[slug(cells[0])] = cells
-            if len(tables) != 2:
-                raise DocError("specsim compare printed %d tables, not 2" % len(tables))
-            return {"rel": tables[0], "abs": tables[1], "text": out}
+            if len(tables) != 3:
+                raise DocError("specsim compare printed %d tables, not 3" % len(tables))
+            return {"rel": tables[0], "abs": tables[1], "side": tables[2], "text": out}
         return self.once("compare", make)
 
     def tables_text(self):
@@ -184,7 +192,8 @@ class Facts:
         core relative error over all rows, and what fixed point adds at most."""
         def make():
             args = {"default": [], "up5k": ["--config", "up5k"], "tuned": ["--mode", "tuned"],
-                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"]}.get(variant)
+                    "up5k_tuned": ["--config", "up5k", "--mode", "tuned"], "pow": ["--mode", "pow"],
+                    "up5k_pow": ["--config", "up5k", "--mode", "pow"]}.get(variant)
             if args is None and variant.startswith("tbl_aw_"):
                 args = ["--tbl-aw", variant[7:]]
             if args is None:
@@ -197,8 +206,18 @@ class Facts:
                     rows[slug(cells[0])] = cells
             m = re.search(r"Fixed point adds at most ([\d.]+) %.*\(n = (\d+)\)", out)
             worst = max(rows.values(), key=lambda c: percent(c[3], "accuracy"))
-            return {"rows": rows, "added": float(m.group(1)) if m else None, "added_n": int(m.group(2)) if m else None,
-                    "worst_core": worst[3], "text": out}
+            res = {"rows": rows, "added": float(m.group(1)) if m else None, "added_n": int(m.group(2)) if m else None,
+                   "worst_core": worst[3], "text": out}
+            # pow mode: every angle and every n (acc.<variant>.every, every_n, every_angle, every_rel, every_rel_n,
+            # positions, goal, stretch)
+            m = re.search(r"; (\d+) positions .*?worst \|2\^-y - cos\^n\| = ([\d.]+) % \(n = (\d+), angle ([\d.]+) rad\)"
+                          r".*?worst relative error in the epicentre ([\d.]+) % \(n = (\d+)\)\s*Goal 0\.1 % of C \+ "
+                          r"2\^-14: ([^(]+?) \(stretch goal 0\.025 % of C \+ 2\^-14: ([^)]+)\)", out, re.S)
+            if m:
+                res.update({"positions": int(m.group(1)), "every": float(m.group(2)), "every_n": int(m.group(3)),
+                            "every_angle": float(m.group(4)), "every_rel": float(m.group(5)),
+                            "every_rel_n": int(m.group(6)), "goal": m.group(7).strip(), "stretch": m.group(8).strip()})
+            return res
         return self.once("accuracy." + variant, make)
 
     def fig8_mode(self, mode):
@@ -267,7 +286,10 @@ class Facts:
             raise DocError("unknown fact %s" % key)
         if head == "acc":   # acc.<variant>.added|added_n, acc.<variant>.worst[.n], acc.<variant>.rows.<slug>.<col>[.n]
             acc = self.accuracy(parts[1])
-            if parts[2] in ("added", "added_n"):
+            if parts[2] in ("added", "added_n", "positions", "every", "every_n", "every_angle", "every_rel",
+                            "every_rel_n", "goal", "stretch"):
+                if parts[2] not in acc or acc[parts[2]] is None:
+                    raise DocError("fact %s: specsim accuracy printed no such figure" % key)
                 return acc[parts[2]]
             if parts[2] == "worst":
                 return cell_value(acc["worst_core"], parts[3:], key)
@@ -344,6 +366,7 @@ TABLES_COLUMNS = {"rom9": 3, "kbit": 4, "double": 5, "core": 6, "abs": 7, "meets
 # The renders facts render[_VARIANT].* come from: specsim render's options (besides --quiet, --out, --stats)
 RENDERS = {"render": ["--scene", "default", "--size", "512", "--model", "rtl", "--mode", "patent"],
            "render_tuned": ["--scene", "default", "--size", "512", "--model", "rtl", "--mode", "tuned"],
+           "render_pow": ["--scene", "default", "--size", "512", "--model", "rtl", "--mode", "pow"],
            "render_perchannel": ["--scene", "default", "--size", "512", "--model", "rtl", "--rgb", "per-channel"],
            "render_cull": ["--scene", "default", "--size", "512", "--model", "rtl", "--cull-specular"]}
 for _size in (256, 384, 768, 1024):
@@ -379,6 +402,29 @@ def bad_input_rows():
     sys.path.insert(0, os.path.join(ROOT, "tests"))
     import bad_input
     return sum(1 for l in open(os.path.join(ROOT, "docs", "bad-input.md")) if bad_input.ROW.match(l.rstrip("\n")))
+
+
+def synth_row(f, name):
+    """A run of docs/data/synth.json (make synth) by its name, target-top-config[-lLANES]."""
+    rows = f.data("synth").get("by_run", {})
+    if name not in rows:
+        raise DocError("docs/data/synth.json has no run %s (make synth)" % name)
+    return rows[name]
+
+
+def pow_rom_bits(h):
+    """ROM 9 (the log table) and ROM 12 (exp2) of a pow-mode header, in bits."""
+    rom9 = 2 ** (1 + h["POW_SEG_W"] + h["POW_IDX_W"]) * (h["POW_SH_W"] + 1 + h["POW_DLT_W"] + h["POW_VAL_W"])
+    rom12 = 2 ** h["TBL_AW"] * (h["TBL_DW"] + (h["DELTA_W"] if h["INTERP"] else 0))
+    return rom9 + rom12
+
+
+def pow_edge_step():
+    """kPowEdgeStep of rom/gen/pow_table.h: what the log table's entry at |angle| = K adds to the next one's."""
+    m = re.search(r"constexpr double kPowEdgeStep = ([\d.]+);", open(os.path.join(ROOT, "rom", "gen", "pow_table.h")).read())
+    if not m:
+        raise DocError("rom/gen/pow_table.h has no kPowEdgeStep")
+    return float(m.group(1))
 
 
 def q_below_from(f, limit):
@@ -435,6 +481,53 @@ CALC = {
     "ice40_up5k": lambda f: f.ice40_brams("9", "up5k") + f.ice40_brams("12", "up5k"),
     "ice40_up5k_tuned": lambda f: f.ice40_brams("9", "up5k_tuned") + f.ice40_brams("12", "up5k_tuned"),
     "rom9_up5k_tuned_bits": lambda f: f.header("up5k_tuned")["SCALE_W"] + f.header("up5k_tuned")["TSEL_W"],
+    # pow mode (docs/pow.md): ROM bits of both tables, per configuration; the up5k configuration's SB_RAM40_4K
+    "pow_rom_bits": lambda f: pow_rom_bits(f.header("pow")),
+    "pow_up5k_rom_bits": lambda f: pow_rom_bits(f.header("up5k_pow")),
+    "patent_rom_bits": lambda f: f.header("default")["ROM9_DEPTH"] * f.header("default")["SCALE_W"] +
+    f.header("default")["ROM12_DEPTH"] * f.header("default")["TBL_DW"],
+    "ice40_up5k_pow": lambda f: f.ice40_brams("9", "up5k_pow") + f.ice40_brams("12", "up5k_pow"),
+    "pow_rom9_words": lambda f: 2 ** (1 + f.header("pow")["POW_SEG_W"] + f.header("pow")["POW_IDX_W"]),
+    "pow_up5k_rom9_words": lambda f: 2 ** (1 + f.header("up5k_pow")["POW_SEG_W"] + f.header("up5k_pow")["POW_IDX_W"]),
+    "pow_rom9_width": lambda f: f.header("pow")["POW_SH_W"] + 1 + f.header("pow")["POW_DLT_W"] + f.header("pow")["POW_VAL_W"],
+    "pow_segments": lambda f: 2 ** f.header("pow")["POW_SEG_W"],
+    "pow_last_octave": lambda f: 2 ** f.header("pow")["POW_SEG_W"] - 2,
+    "pow_entries": lambda f: 2 ** f.header("pow")["POW_IDX_W"],
+    "pow_up5k_entries": lambda f: 2 ** f.header("up5k_pow")["POW_IDX_W"],
+    "pow_lowest_octave": lambda f: 2 ** f.header("pow")["POW_SEG_W"] - 1,
+    "pow_up5k_rom12_width": lambda f: f.header("up5k_pow")["TBL_DW"] + f.header("up5k_pow")["DELTA_W"],
+    # the log table's edge at |angle| = K (docs/pow.md): -log2 cos K, the generator's kPowEdgeStep, the worst
+    # |2^-(c (1 - f)) - f| over f with c = kPowEdgeStep (in units of the next entry's cos), the last segment's
+    # spacing 2^-e rad, and cos^2 there 2^-2e
+    "pow_edge_log": lambda f: -math.log2(math.cos(f.header("pow")["POW_K"] * 2.0 ** -f.header("pow")["ANG_FRAC"])),
+    "pow_edge_step": lambda f: pow_edge_step(),
+    "pow_edge_err": lambda f: max(abs(2.0 ** (-pow_edge_step() * (1 - i / 10000.0)) - i / 10000.0)
+                                  for i in range(10001)),
+    "pow_edge_spacing_exp": lambda f: 2 ** f.header("pow")["POW_SEG_W"] - 1 + f.header("pow")["POW_IDX_W"],
+    "pow_edge_n2_exp": lambda f: 2 * (2 ** f.header("pow")["POW_SEG_W"] - 1 + f.header("pow")["POW_IDX_W"]),
+    "patent_up5k_rom_bits": lambda f: f.header("up5k")["ROM9_DEPTH"] * f.header("up5k")["SCALE_W"] +
+    f.header("up5k")["ROM12_DEPTH"] * (f.header("up5k")["TBL_DW"] + f.header("up5k")["DELTA_W"]),
+    "tuned_rom_bits": lambda f: f.header("tuned")["ROM9_DEPTH"] * (f.header("tuned")["SCALE_W"] +
+                                                                     f.header("tuned")["TSEL_W"]) +
+    f.header("tuned")["ROM12_DEPTH"] * f.header("tuned")["TBL_DW"],
+    "tuned_up5k_rom_bits": lambda f: f.header("up5k_tuned")["ROM9_DEPTH"] * (f.header("up5k_tuned")["SCALE_W"] +
+                                                                           f.header("up5k_tuned")["TSEL_W"]) +
+    f.header("up5k_tuned")["ROM12_DEPTH"] * (f.header("up5k_tuned")["TBL_DW"] + f.header("up5k_tuned")["DELTA_W"]),
+    # the worst absolute error / C of each mode's core (specsim compare) in steps of an 8-bit display
+    "patent_abs_steps": lambda f: 2.55 * percent(f.compare()["abs"]["all_n_0_1023"][4], "patent_abs_steps"),
+    "tuned_abs_steps": lambda f: 2.55 * percent(f.compare()["abs"]["all_n_0_1023"][6], "tuned_abs_steps"),
+    "pow_abs_steps": lambda f: 2.55 * percent(f.compare()["abs"]["all_n_0_1023"][8], "pow_abs_steps"),
+    "ice40_pow": lambda f: f.ice40_brams("9", "pow") + f.ice40_brams("12", "pow"),
+    "ice40_default": lambda f: f.ice40_brams("9", "default") + f.ice40_brams("12", "default"),
+    # what pow mode adds on the UP5K (make synth, spec_stream LANES = 1, up5k configuration)
+    "pow_extra_lut_l1": lambda f: synth_row(f, "ice40-up5k-spec_stream-up5k-pow")["lut"] -
+    synth_row(f, "ice40-up5k-spec_stream-up5k")["lut"],
+    "pow_extra_ff_l1": lambda f: synth_row(f, "ice40-up5k-spec_stream-up5k-pow")["ff"] -
+    synth_row(f, "ice40-up5k-spec_stream-up5k")["ff"],
+    # make synth: the rows where pow mode's worst seed is below patent mode's, and those where it is not
+    "pow_synth_slower": lambda f: pow_synth_rows_where(f, True),
+    "pow_synth_not_slower": lambda f: pow_synth_rows_where(f, False),
+    "pow_synth_none_slower": lambda f: pow_synth_rows_where(f, True) == "none",
     # docs/tables.md: can any patent-mode row meet 0.25 %?
     "tables_patent_meets": lambda f: any(r[8] == "yes" for r in f.tables_md() if r[1] == "patent"),
     # the renderer (docs/renderer.md, docs/host.md)
@@ -603,6 +696,73 @@ def block_bench_stream(f):
         out.append("| %s | %s | %.3g | %s |" % (sim, core, pps[key], "1" if key == "verilator_stream" else
                                                   ("%.2f" % r if r >= 0.01 else "%.3f" % r)))
     return "\n".join(out)
+
+
+# make synth's pow rows beside patent mode's at the same target, LANES and seeds (docs/pow.md, README)
+POW_SYNTH_ROWS = [("ice40-up5k", "spec_stream", 1), ("ice40-up5k", "spec_stream", 2), ("ecp5-25f", "spec_stream", 1),
+                  ("ecp5-25f", "spec_stream", 4), ("ice40-up5k", "spec_stream_seq", 1)]
+
+
+def pow_synth_pairs(f):
+    """(target, top, LANES, patent mode's row, pow mode's row) of make synth's pow comparison."""
+    return [(target, top, lanes) + tuple(synth_row(f, "%s-%s-%s%s" % (target, top, config,
+                                                                     "" if lanes == 1 else "-l%d" % lanes))
+                                         for config in ("up5k", "up5k-pow"))
+            for target, top, lanes in POW_SYNTH_ROWS]
+
+
+def median(xs):
+    xs = sorted(xs)
+    return xs[len(xs) // 2] if len(xs) % 2 else (xs[len(xs) // 2 - 1] + xs[len(xs) // 2]) / 2
+
+
+def block_synth_pow(f):
+    out = ["| target | top | LANES | mode | LUT4 | FF | BRAM | DSP | ROM bits (ROM 9 + ROM 12) | "
+           "Fmax (MHz), worst seed | median of the seeds | Fmax per seed 1, 2, ... | goal (MHz) | "
+           "pow / patent, worst seed |", "|" + "---|" * 14]
+    bits = {"patent": f.get("calc.patent_up5k_rom_bits"), "pow": f.get("calc.pow_up5k_rom_bits")}
+    for target, top, lanes, pat, pw in pow_synth_pairs(f):
+        for mode, r in (("patent", pat), ("pow", pw)):
+            seeds = [x for x in (r.get("fmax_seeds") or []) if x is not None]
+            ratio = "-"
+            if mode == "pow" and r.get("fmax_mhz") and pat.get("fmax_mhz"):
+                ratio = "%.2f" % (r["fmax_mhz"] / pat["fmax_mhz"])
+            out.append("| %s | %s | %d | %s | %d | %d | %d | %d | %s | %s | %s | %s | %s | %s |" % (
+                target, top, lanes, mode, r["lut"], r["ff"], r["bram"], r["dsp"], fmt(bits[mode], "int_sep"),
+                "-" if r.get("fmax_mhz") is None else "%.1f" % r["fmax_mhz"],
+                "%.1f" % median(seeds) if seeds else "-", ", ".join("%.1f" % x for x in seeds) or "-",
+                "-" if r.get("goal_mhz") is None else "%g" % r["goal_mhz"], ratio))
+    return "\n".join(out)
+
+
+def pow_synth_rows_where(f, slower):
+    """The rows where pow mode's worst seed is below patent mode's (slower) or not, as text."""
+    names = ["%s %s with LANES = %d" % ({"ice40-up5k": "UP5K", "ecp5-25f": "ECP5-25F"}[t], top, lanes)
+             for t, top, lanes, pat, pw in pow_synth_pairs(f)
+             if (pw["fmax_mhz"] < pat["fmax_mhz"]) == slower]
+    if not names:
+        return "none"
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def block_compare_side(f):
+    """The third table of specsim compare: the choices side by side (docs/pow.md)."""
+    lines = f.compare()["text"].splitlines()
+    starts = [i for i, l in enumerate(lines) if l.startswith("| BRDF range")]
+    out = []
+    for l in lines[starts[2]:]:
+        if not l.startswith("|"):
+            break
+        out.append(l)
+    return "\n".join(out)
+
+
+def block_accuracy_pow(f):
+    """specsim accuracy --mode pow: its table and the paragraph on every angle and every n (docs/pow.md)."""
+    text = f.accuracy("pow")["text"]
+    table = [l for l in text.splitlines() if l.startswith("|")]
+    every = text[text.index("Every angle and every n"):].strip().splitlines()
+    return "\n".join(table + ["", "```"] + every + ["```"])
 
 
 def block_compare_rel(f):
@@ -884,6 +1044,9 @@ BLOCKS.update({
     "formal-mutants": block_formal_mutants,
     "coverage": block_coverage,
     "compare-rel": block_compare_rel,
+    "compare-side": block_compare_side,
+    "synth-pow": block_synth_pow,
+    "accuracy-pow": block_accuracy_pow,
     "tables-excerpt": block_tables_excerpt,
     "render-stats": block_render_stats,
     "accuracy": block_accuracy,

@@ -6,7 +6,8 @@ warns about an image that does not fit. So every synthesis flow of the project c
 core's parameters (the defaults of a spec_params.vh, overridden by -G NAME=VALUE as the flow passes them) and
 fails, naming the file and what differs, when
   - an image cannot be read,
-  - its first line is not specrom's, or names other parameters than the core's,
+  - its first line is not specrom's, or names other parameters than the core's (a pow mode image in a core with
+    POW = 0, or the other way round, is named as such),
   - it holds another number of words than the ROM has, or a word wider than the ROM's words.
 
 usage: rom_check.py --header rom/spec_params.vh --rom9 F --rom12 F [-G NAME=VALUE ...]
@@ -18,6 +19,10 @@ import sys
 
 HEAD9 = re.compile(r"^// specrom ROM 9: n_w=(\d+) scale_w=(\d+) scale_frac=(\d+) decoder_rom=(\d+) tsel_w=(\d+)")
 HEAD12 = re.compile(r"^// specrom ROM 12: tbl_aw=(\d+) tsel_w=(\d+) tbl_frac=(\d+) interp=(\d+) delta_w=(\d+)")
+# pow mode's images (docs/pow.md): the log table (ROM 9) and the exp2 table (ROM 12)
+HEAD9_POW = re.compile(r"^// specrom ROM 9 pow: ang_frac=(\d+) half_pi=(\d+) seg_w=(\d+) idx_w=(\d+) val_w=(\d+) "
+                       r"dlt_w=(\d+) sh_w=(\d+) xb=(\d+)")
+HEAD12_POW = re.compile(r"^// specrom ROM 12 pow: tbl_aw=(\d+) tbl_frac=(\d+) interp=(\d+) delta_w=(\d+)")
 
 
 def header_params(path):
@@ -60,19 +65,34 @@ def check_words(path, words, depth, width, problems):
 
 
 def check(p, rom9, rom12):
-    """Problems (strings) of the two images against the parameter dict p (C_W ... TSEL_W)."""
+    """Problems (strings) of the two images against the parameter dict p (C_W ... TSEL_W, POW ...)."""
     problems = []
     dec = p["DECODER_ROM"] != 0
-    for path, head, expect, depth, width in (
-        (rom9, HEAD9,
-         [("N_W", p["N_W"]), ("SCALE_W", p["SCALE_W"]), ("SCALE_FRAC", p["SCALE_FRAC"]),
-          ("DECODER_ROM", int(dec)), ("TSEL_W", p["TSEL_W"] if dec else None)],
-         1 << p["N_W"], p["SCALE_W"] + (p["TSEL_W"] if dec else 0)),
-        (rom12, HEAD12,
-         [("TBL_AW", p["TBL_AW"]), ("TSEL_W", p["TSEL_W"]), ("TBL_FRAC", p["TBL_FRAC"]),
-          ("INTERP", int(p["INTERP"] != 0)), ("DELTA_W", p["DELTA_W"] if p["INTERP"] else None)],
-         1 << (p["TBL_AW"] + p["TSEL_W"]), p["TBL_FRAC"] + 1 + (p["DELTA_W"] if p["INTERP"] else 0)),
-    ):
+    pow_mode = p.get("POW", 0) != 0
+    if pow_mode:
+        roms = (
+            (rom9, HEAD9_POW,
+             [("ANG_FRAC", p["ANG_FRAC"]), ("POW_K", p["POW_K"]), ("POW_SEG_W", p["POW_SEG_W"]),
+              ("POW_IDX_W", p["POW_IDX_W"]), ("POW_VAL_W", p["POW_VAL_W"]), ("POW_DLT_W", p["POW_DLT_W"]),
+              ("POW_SH_W", p["POW_SH_W"]), ("POW_XB", p["POW_XB"])],
+             1 << (1 + p["POW_SEG_W"] + p["POW_IDX_W"]), p["POW_SH_W"] + 1 + p["POW_DLT_W"] + p["POW_VAL_W"]),
+            (rom12, HEAD12_POW,
+             [("TBL_AW", p["TBL_AW"]), ("TBL_FRAC", p["TBL_FRAC"]), ("INTERP", int(p["INTERP"] != 0)),
+              ("DELTA_W", p["DELTA_W"] if p["INTERP"] else None)],
+             1 << p["TBL_AW"], p["TBL_FRAC"] + 1 + (p["DELTA_W"] if p["INTERP"] else 0)),
+        )
+    else:
+        roms = (
+            (rom9, HEAD9,
+             [("N_W", p["N_W"]), ("SCALE_W", p["SCALE_W"]), ("SCALE_FRAC", p["SCALE_FRAC"]),
+              ("DECODER_ROM", int(dec)), ("TSEL_W", p["TSEL_W"] if dec else None)],
+             1 << p["N_W"], p["SCALE_W"] + (p["TSEL_W"] if dec else 0)),
+            (rom12, HEAD12,
+             [("TBL_AW", p["TBL_AW"]), ("TSEL_W", p["TSEL_W"]), ("TBL_FRAC", p["TBL_FRAC"]),
+              ("INTERP", int(p["INTERP"] != 0)), ("DELTA_W", p["DELTA_W"] if p["INTERP"] else None)],
+             1 << (p["TBL_AW"] + p["TSEL_W"]), p["TBL_FRAC"] + 1 + (p["DELTA_W"] if p["INTERP"] else 0)),
+        )
+    for path, head, expect, depth, width in roms:
         try:
             first, words = read_image(path)
         except OSError as e:
@@ -82,7 +102,11 @@ def check(p, rom9, rom12):
             problems.append("ROM image %s: %s" % (path, e))
             continue
         m = head.match(first)
-        if not m:
+        if not m and not pow_mode and re.match(r"^// specrom ROM \d+ pow:", first):
+            problems.append("ROM image %s was made for pow mode (specrom --mode pow), but the core has POW=0" % path)
+        elif not m and pow_mode and re.match(r"^// specrom ROM \d+:", first):
+            problems.append("ROM image %s was made for patent or tuned mode, but the core has POW=1" % path)
+        elif not m:
             problems.append("ROM image %s does not start with specrom's header line; make it with specrom" % path)
         else:
             got = [int(g) for g in m.groups()]

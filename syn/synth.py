@@ -21,7 +21,8 @@ writes every run's figures to FILE (make synth: docs/data/synth.json, the table 
 ROMs must land in block RAM: a run whose log shows a ROM mapped to logic fails.
 
 Usage: syn/synth.py [--targets ice40-up5k,ecp5-25f,xc7] [--tops spec_stream,spec_unit] (also spec_stream_seq)
-                    [--configs up5k,default] [--lanes 1,2,4] [--runs RUNS] [--out build/synth]
+                    [--configs up5k,default] (also pow, up5k-pow: pow mode) [--lanes 1,2,4] [--runs RUNS]
+                    [--out build/synth]
                     [--specrom build/specrom] [--seeds 1-5] [--data FILE]
 RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. ice40-up5k:spec_stream:up5k:2).
        syn/synth.py --shader [--targets ...] [--shader-configs up5k,ecp5,...] [--seeds 1] [--out build/synth] ...
@@ -46,11 +47,17 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# The configurations of rom/gen/spec_format.h (config_format) as wrapper parameters.
+# The configurations of rom/gen/spec_format.h (config_format) as wrapper parameters; "pow" and "up5k-pow": the
+# same configurations in pow mode (issue 30, docs/pow.md; POW = 1, the up5k configuration's smaller log table).
 CONFIGS = {
     "default": {},
     "up5k": {"TBL_AW": 8, "INTERP": 1, "INTERP_FRAC": 10, "DELTA_W": 10, "SCALE_W": 16, "SCALE_FRAC": 13},
 }
+CONFIGS["pow"] = {"POW": 1}
+CONFIGS["up5k-pow"] = dict(CONFIGS["up5k"], POW=1, POW_IDX_W=5)
+# what specrom needs to write each configuration's images
+SPECROM_ARGS = {"default": [], "up5k": ["--config", "up5k"], "pow": ["--mode", "pow"],
+                "up5k-pow": ["--config", "up5k", "--mode", "pow"]}
 
 # Goals (issue 14), per target and LANES: the pixel clocks of 720p60 (74.25 MHz) on the UP5K and 1080p60
 # (148.5 MHz) on the ECP5 at one pixel per clock; 1080p60's active pixels (124.4 Mpixel/s) with two lanes on the
@@ -140,8 +147,8 @@ def rom_images(config, out, specrom):
         return os.path.join(ROOT, "rom", "rom9_scale.hex"), os.path.join(ROOT, "rom", "rom12_cosk.hex")
     d = os.path.join(out, "rom_" + config)
     os.makedirs(d, exist_ok=True)
-    if subprocess.call([specrom, "--config", config, "--out", d]) != 0:
-        fail("specrom --config %s failed" % config)
+    if subprocess.call([specrom] + SPECROM_ARGS[config] + ["--out", d]) != 0:
+        fail("specrom %s failed" % " ".join(SPECROM_ARGS[config]))
     return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
 
 
@@ -175,6 +182,12 @@ def check_roms(config, rom9, rom12):
         fail("the ROM images do not fit the %s configuration's parameters" % config)
 
 
+# The ECP5: memories wider than 18 bits (pow mode's ROM 9, and ROM 12 in the up5k configuration: 512 x 36 and
+# 256 x 27) map to DP16KD's 18-bit ports (syn/ecp5_brams_x18.txt says why) before synth_ecp5 maps the others.
+ECP5_WIDE_ROMS = ("synth_ecp5 -top %s -run :map_ram; memory_libmap -lib syn/ecp5_brams_x18.txt t:$mem_v2 r:WIDTH>18 %%i; "
+                  "techmap -map +/lattice/brams_map_16kd.v; ")
+
+
 def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     if top in COMPANION:
         return companion_script(target, top, json_out, stat_out)
@@ -187,7 +200,7 @@ def yosys_script(target, top, config, lanes, rom9, rom12, json_out, stat_out):
     chp += ' -set ROM9_FILE "%s" -set ROM12_FILE "%s"' % (rom9, rom12)
     synth = {
         "ice40": "synth_ice40 -dsp -top synth_wrap -json %s" % json_out,
-        "ecp5": "synth_ecp5 -top synth_wrap -json %s" % json_out,
+        "ecp5": ECP5_WIDE_ROMS % "synth_wrap" + "synth_ecp5 -top synth_wrap -run map_ram: -json %s" % json_out,
         "xc7": "synth_xilinx -family xc7 -top synth_wrap",
     }[FAMILY[target]]
     return ("read_verilog -defer -Irom %s syn/synth_wrap.v; chparam %s synth_wrap; %s; tee -o %s stat"

@@ -15,6 +15,8 @@ module synth_wrap #(
     parameter DELTA_W = `SPEC_DELTA_W,
     parameter SCALE_W = `SPEC_SCALE_W,
     parameter SCALE_FRAC = `SPEC_SCALE_FRAC,
+    parameter POW = `SPEC_POW,              // pow mode (docs/pow.md) and its log table's size
+    parameter POW_IDX_W = `SPEC_POW_IDX_W,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE
 ) (
@@ -45,7 +47,8 @@ module synth_wrap #(
             if (UNIT == 0) begin : g_pipelined
                 spec_stream #(
                     .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
-                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
+                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .POW(POW), .POW_IDX_W(POW_IDX_W), .ROM9_FILE(ROM9_FILE),
+                    .ROM12_FILE(ROM12_FILE),
                     .LANES(LANES), .PACK(PACK)
                 ) u_core (
                     .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
@@ -55,7 +58,8 @@ module synth_wrap #(
             end else begin : g_seq
                 spec_stream_seq #(
                     .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
-                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+                    .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .POW(POW), .POW_IDX_W(POW_IDX_W), .ROM9_FILE(ROM9_FILE),
+                    .ROM12_FILE(ROM12_FILE)
                 ) u_core (
                     .clk(clk), .rst_n(rst_q), .s_axis_tvalid(s_valid), .s_axis_tready(s_ready),
                     .s_axis_tdata(sh), .m_axis_tvalid(m_valid), .m_axis_tready(m_ready),
@@ -73,7 +77,8 @@ module synth_wrap #(
             always @(posedge clk) we <= {we[5:0], strobe_q};
             spec_unit #(
                 .TBL_AW(TBL_AW), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC), .DELTA_W(DELTA_W),
-                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+                .SCALE_W(SCALE_W), .SCALE_FRAC(SCALE_FRAC), .POW(POW), .POW_IDX_W(POW_IDX_W), .ROM9_FILE(ROM9_FILE),
+                .ROM12_FILE(ROM12_FILE)
             ) u_core (
                 .clk(clk), .init_n(rst_q), .start(we[6]), .c_i(sh[15:0]), .c_we(we[0]),
                 .dzeta_i(sh[127:96]), .dzeta_we(we[1]), .zeta0_i(sh[95:64]), .zeta0_we(we[2]),

@@ -14,6 +14,8 @@ exit and a message that names what is wrong:
   param_rules   OUT_W != C_W, odd ANG_W, N_W < 4, TSEL_W != 2 with decoder 10's gates: Icarus, Verilator, Yosys
   desc_fields   spec_stream's descriptor fields overlapping or outside DESC_W: Icarus, Verilator, Yosys
   two_headers   two spec_params.vh of different configurations in one compilation: Icarus, Verilator, Yosys
+  pow_mode      pow mode's images in a patent-mode core and the other way round (Icarus, the Verilated ROM model,
+                the synthesis-flow check), pow images of the other configuration, POW with decoder 10 as a ROM
   good          the right configuration runs in every tool (the checks do not fire on correct input)
 Exit 0 when every expectation held; 1 with the first one that did not.
 """
@@ -229,6 +231,50 @@ def case_two_headers(c):
     c.expect_pass("Verilator, the same header twice", [c.a.verilator, "--lint-only", same])
 
 
+def pow_images(c, config=None):
+    d = os.path.join(c.a.work, "rom_pow" + ("_" + config if config else ""))
+    os.makedirs(d, exist_ok=True)
+    rc, out = c.run([c.a.specrom, "--mode", "pow", "--out", d] + (["--config", config] if config else []))
+    if rc != 0:
+        sys.exit("config_checks: specrom --mode pow failed\n" + out)
+    return os.path.join(d, "rom9_scale.hex"), os.path.join(d, "rom12_cosk.hex")
+
+
+def case_pow_mode(c):
+    r9, r12 = c.default_images()
+    p9, p12 = pow_images(c)
+    u9, u12 = pow_images(c, "up5k")
+    # pow images in a core with POW = 0 (the defaults of rom/spec_params.vh)
+    c.expect_fail("Icarus, pow images in a patent-mode core", c.icarus({"ROM9_FILE": p9, "ROM12_FILE": p12}),
+                  [p9, "was made for pow mode", "POW = 0"])
+    c.expect_fail("Verilator, pow images in a patent-mode ROM 9 and ROM 12", c.romsim_with(read(p9), read(p12)),
+                  ["rom9.hex", "was made for pow mode"])
+    c.expect_fail("synthesis check, pow images with POW = 0", c.rom_check(p9, p12), [p9, "was made for pow mode"])
+    # patent images in a core with POW = 1
+    c.expect_fail("Icarus, patent images in a pow-mode core", c.icarus({"POW": 1, "ROM9_FILE": r9, "ROM12_FILE": r12}),
+                  [r9, "was made for patent or tuned mode", "POW = 1"])
+    c.expect_fail("synthesis check, patent images with POW = 1", c.rom_check(r9, r12, {"POW": 1}),
+                  [r9, "was made for patent or tuned mode"])
+    # the up5k configuration's pow images under the default pow parameters (another log table and exp2 table)
+    c.expect_fail("Icarus, up5k pow images under the default pow parameters",
+                  c.icarus({"POW": 1, "ROM9_FILE": u9, "ROM12_FILE": u12}),
+                  [u9, "was made for other parameters", "POW_IDX_W=5", "POW_IDX_W=6"])
+    c.expect_fail("synthesis check, up5k pow images under the default pow parameters",
+                  c.rom_check(u9, u12, {"POW": 1}), [u9, "POW_IDX_W=5, the core has POW_IDX_W=6"])
+    # pow mode has no table field
+    name = "spec_parameter_error_POW_1_takes_no_table_field_DECODER_ROM_must_be_0"
+    c.expect_fail("Icarus, POW = 1 with DECODER_ROM = 1", c.icarus({"POW": 1, "DECODER_ROM": 1}), [name])
+    c.expect_fail("Verilator, POW = 1 with DECODER_ROM = 1", c.verilator({"POW": 1, "DECODER_ROM": 1}), [name])
+    c.expect_fail("Yosys, POW = 1 with DECODER_ROM = 1", c.yosys({"POW": 1, "DECODER_ROM": 1}, "spec_unit"), [name])
+    # and the right ones run
+    c.expect_pass("Icarus, pow parameters and images", c.icarus({"POW": 1, "ROM9_FILE": p9, "ROM12_FILE": p12}),
+                  "tb_elab: ran")
+    c.expect_pass("Icarus, up5k pow parameters and images",
+                  c.icarus(dict(UP5K, POW=1, POW_IDX_W=5, ROM9_FILE=u9, ROM12_FILE=u12)), "tb_elab: ran")
+    c.expect_pass("Icarus, a pow header on the include path", c.icarus({}, inc=os.path.dirname(p9)), "tb_elab: ran")
+    c.expect_pass("synthesis check, pow", c.rom_check(p9, p12, {"POW": 1}))
+
+
 def case_good(c):
     r9, r12 = c.default_images()
     u9, u12 = c.up5k_images()
@@ -263,7 +309,7 @@ def main():
     os.makedirs(a.work)
     c = Check(a)
     cases = {"rom_params": case_rom_params, "param_rules": case_param_rules, "desc_fields": case_desc_fields,
-             "two_headers": case_two_headers, "good": case_good}
+             "two_headers": case_two_headers, "good": case_good, "pow_mode": case_pow_mode}
     for k in ("short", "long", "wide", "noheader", "missing"):
         cases["rom_" + k] = (lambda kind: lambda c: case_rom(c, kind))(k)
     if a.case not in cases:

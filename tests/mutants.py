@@ -184,6 +184,43 @@ MUTANTS = [
         why="Start does not reload counter 5 from the length register: a Start without a new load runs from the "
             "counter's maximum, a 65,536-pixel span (the patent's behaviour); a load before each Start still works",
     ),
+    # pow mode (issue 30, docs/pow.md)
+    dict(
+        name="pow-log-table-coarse",
+        file="rom/gen/pow_table.cpp",
+        old="const double v = std::nearbyint(std::ldexp(l[i], x));",
+        new="const double v = std::ldexp(std::nearbyint(std::ldexp(l[i], x - 5)), 5);",
+        target="spec_tests",
+        cmd=["./spec_tests", "--gtest_filter=PowModel.EveryAngleAndEveryNWithinTheGoal"],
+        marker="the stretch goal",
+        passes=[["./spec_tests", "--gtest_filter=PowModel.EdgesOfTheDomain"]],
+        why="the log table's values lose five bits (RTL and model alike, so they still agree bit for bit): every "
+            "pixel is still within the 0.1 % goal, but no longer within the stretch goal the exhaustive test asserts",
+    ),
+    dict(
+        name="pow-normalization-ignores-stalls",
+        file="rtl/spec_powpath.v",
+        old="                if (ce) begin\n                    x_q <= x_d;",
+        new="                if (1'b1) begin\n                    x_q <= x_d;",
+        target="spec_tests",
+        cmd=["./spec_tests", "--gtest_filter=PowStream.EqualsModelUnderStalls"],
+        marker="n=",
+        passes=[["./spec_tests", "--gtest_filter=PowUnit.FirstPixelIsTheFormats"]],
+        why="the log table's normalization stages move on while spec_stream is stalled: spec_unit never stalls "
+            "(ce = 1) and keeps its timing; only the stream under random stalls sees the wrong pixels",
+    ),
+    dict(
+        name="pow-n0-zero-past-half-pi",
+        file="rtl/spec_powpath.v",
+        old="always @(posedge clk) if (ce) zero_a <= past3 & nz3;",
+        new="always @(posedge clk) if (ce) zero_a <= past3 & (nz3 | 1'b1);",   # nz3 still read: Verilator -Wall
+        target="spec_tests",
+        cmd=["./spec_tests", "--gtest_filter=PowUnit.EqualsModelAndMeetsTheGoalForEveryN"],
+        marker="n=0 ",
+        passes=[["./spec_tests", "--gtest_filter=PowModel.EdgesOfTheDomain"]],
+        why="n = 0 gives 0 past pi/2 instead of C (cos^0 = 1 at every angle): a span of n = 0 reaching past "
+            "pi/2 differs from the model, which the other n never show",
+    ),
     dict(
         name="rom-word-count-unchecked",
         file="rtl/spec_rom.v",

@@ -21,67 +21,28 @@
 using namespace spec;
 using namespace spec::test;
 
-namespace {
-
-// Cycles from a descriptor accepted by an idle spec_stream to its first pixel on m_axis.
-template <class V>
-int stream_first_pixel(StreamDriver<V>& d, const SpanRegs& r) {
-    uint32_t w[kDescWords];
-    pack_descriptor(r, w);
-    V& t = d.top();
-    for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
-    t.m_axis_tready = 1;
-    t.s_axis_tvalid = 0;
-    t.eval();
-    for (int i = 0; i < 4 && !t.s_axis_tready; ++i) d.step();  // tready rises the second cycle after a reset
-    t.s_axis_tvalid = 1;
-    t.eval();
-    EXPECT_TRUE(t.s_axis_tready) << "an idle core takes a descriptor";
-    d.step();  // accepted at this edge: cycle a
-    t.s_axis_tvalid = 0;
-    int at = 1;
-    t.eval();
-    while (!t.m_axis_tvalid && at < 200) {
-        d.step();
-        t.eval();
-        ++at;
-    }
-    for (int i = 0; i < int(r.len) + 40; ++i) d.step();  // drain
-    return at;
-}
-
-}  // namespace
 
 TEST(ConfigLatency, StreamFirstPixelIsTheHeaders) {
     StreamDriver<Vspec_stream> d;
     for (uint32_t len : {0u, 5u}) {
-        EXPECT_EQ(stream_first_pixel(d, SpanRegs{0x1234, 0, 0, 7, len}), spec_params::STREAM_LATENCY) << len;
-        EXPECT_EQ(stream_first_pixel(d, SpanRegs{0x1234, 0, 0, 7, len}), Format().stream_latency()) << len;
+        EXPECT_EQ(d.first_pixel(SpanRegs{0x1234, 0, 0, 7, len}), spec_params::STREAM_LATENCY) << len;
+        EXPECT_EQ(d.first_pixel(SpanRegs{0x1234, 0, 0, 7, len}), Format().stream_latency()) << len;
     }
 }
 
 TEST(ConfigLatency, Up5kStreamFirstPixelIsTheFormats) {
     StreamDriver<Vspec_stream_up5k> d;
-    EXPECT_EQ(stream_first_pixel(d, SpanRegs{0x1234, 0, 0, 7, 3}), config_format("up5k").stream_latency());
+    EXPECT_EQ(d.first_pixel(SpanRegs{0x1234, 0, 0, 7, 3}), config_format("up5k").stream_latency());
     EXPECT_NE(config_format("up5k").stream_latency(), Format().stream_latency()) << "INTERP adds two stages";
 }
 
 TEST(ConfigLatency, Up5kUnitFirstPixelIsTheFormats) {
     UnitDriverT<Vspec_unit_up5k> d;
     for (uint32_t len : {0u, 4u}) {
-        d.write(SpanRegs{0x4000, 0, 0, 5, len});
-        d.top().start = 1;
-        d.step();
-        int at = 1;
-        std::vector<int> pulses;
-        while (d.top().busy_o && at < 200) {
-            if (d.top().valid_o) pulses.push_back(at);
-            d.step();
-            ++at;
-        }
-        ASSERT_EQ(pulses.size(), len + 1);
-        for (size_t i = 0; i < pulses.size(); ++i) {
-            EXPECT_EQ(pulses[i], config_format("up5k").unit_first_pixel() + 2 * int(i)) << "pixel " << i;
+        const std::vector<int> at = d.valid_cycles(SpanRegs{0x4000, 0, 0, 5, len});
+        ASSERT_EQ(at.size(), len + 1);
+        for (size_t i = 0; i < at.size(); ++i) {
+            EXPECT_EQ(at[i], config_format("up5k").unit_first_pixel() + 2 * int(i)) << "pixel " << i;
         }
     }
 }

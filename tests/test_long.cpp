@@ -3,8 +3,9 @@
 // resets in the middle of spans, back-to-back spans and inputs that must be ignored. Not part of make test.
 //
 // SPEC_LONG_PIXELS (default 10000000; make test-long passes 10^8) pixels through each core in the patent's configuration, a tenth of
-// that through spec_stream's up5k configuration and both cores in tuned mode; SPEC_LONG_SEED (default 1)
-// picks the run.
+// that through spec_stream's up5k configuration, both cores in tuned mode, and each core in pow mode (spec_unit,
+// spec_stream with LANES = 1 and 4 packed, the up5k configuration's with 2 packed, spec_stream_seq: docs/pow.md);
+// SPEC_LONG_SEED (default 1) picks the run.
 // Each test prints how many pixels it checked; a mismatch stops it with the span, pixel and cycle.
 #include <gtest/gtest.h>
 
@@ -25,9 +26,14 @@
 #include "Vspec_stream_l2p_up5k.h"
 #include "Vspec_stream_l4.h"
 #include "Vspec_stream_l4p.h"
+#include "Vspec_stream_pow.h"
+#include "Vspec_stream_pow_l2p_up5k.h"
+#include "Vspec_stream_pow_l4p.h"
+#include "Vspec_stream_seq_pow.h"
 #include "Vspec_stream_tuned.h"
 #include "Vspec_stream_up5k.h"
 #include "Vspec_unit.h"
+#include "Vspec_unit_pow.h"
 #include "Vspec_unit_tuned.h"
 #include "analysis.h"
 #include "cli.h"
@@ -257,6 +263,27 @@ TEST(Long, StreamSeqTunedAgainstModel) {
     stream_run<Vspec_stream_seq_tuned>("spec_stream_seq (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 10);
 }
 
+// pow mode (issue 30): a tenth of the pixels through each core
+Format pow_format(const char* config = "default") {
+    Format f = config_format(config);
+    f.mode = Mode::pow;
+    return f;
+}
+TEST(Long, StreamPowAgainstModel) {
+    stream_run<Vspec_stream_pow>("spec_stream (pow)", Model(pow_format()), kPixels / 10, kSeed * 1000 + 11);
+}
+TEST(Long, StreamPowFourLanesPackedAgainstModel) {
+    stream_run<Vspec_stream_pow_l4p, 4, true>("spec_stream (pow, LANES = 4, PACK = 1)", Model(pow_format()),
+                                              kPixels / 10, kSeed * 1000 + 12);
+}
+TEST(Long, StreamPowUp5kTwoLanesPackedAgainstModel) {
+    stream_run<Vspec_stream_pow_l2p_up5k, 2, true>("spec_stream (pow, up5k, LANES = 2, PACK = 1)",
+                                                   Model(pow_format("up5k")), kPixels / 10, kSeed * 1000 + 13);
+}
+TEST(Long, StreamSeqPowAgainstModel) {
+    stream_run<Vspec_stream_seq_pow>("spec_stream_seq (pow)", Model(pow_format()), kPixels / 10, kSeed * 1000 + 14);
+}
+
 // spec_unit: registers written in the cycle of Start or before it, Start in the cycle busy_o falls (back to
 // back) or after idle cycles, Start/writes/loads with random values while busy (ignored), init_n low in the
 // middle of some spans, now and then a Start without a new load (the length register's l again: the last
@@ -379,4 +406,7 @@ TEST(Long, UnitTunedAgainstModel) {
     Format f;
     f.mode = Mode::tuned;
     unit_run<Vspec_unit_tuned>("spec_unit (tuned)", Model(f), kPixels / 10, kSeed * 1000 + 5);
+}
+TEST(Long, UnitPowAgainstModel) {
+    unit_run<Vspec_unit_pow>("spec_unit (pow)", Model(pow_format()), kPixels / 10, kSeed * 1000 + 15);
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fit.h"
+#include "pow_table.h"
 
 namespace spec {
 
@@ -53,6 +54,26 @@ void Format::validate() const {
         need(tables[i] >= 1 && tables[i] <= 256 && (i == 0 || tables[i] > tables[i - 1]),
              "the table set must be strictly increasing powers k in 1..256");
     }
+    if (mode == Mode::pow) {
+        // the log table (ROM 9), y = n * L and the exp2 table (ROM 12) of pow mode (docs/pow.md)
+        need(pow_seg_w >= 1 && pow_seg_w <= 4, "pow_seg_w must be 1..4");
+        need(pow_idx_w >= 2 && pow_idx_w <= 8, "pow_idx_w must be 2..8");
+        need(pow_frac >= 1 && pow_frac <= 16, "pow_frac must be 1..16");
+        need(pow_val_w >= 8 && pow_val_w <= 18, "pow_val_w must be 8..18");
+        need(pow_dlt_w >= 1 && pow_dlt_w <= pow_val_w, "pow_dlt_w must be 1..pow_val_w");
+        need(pow_sh_w >= 1 && pow_sh_w <= 6, "pow_sh_w must be 1..6");
+        need(pow_yi >= 1 && pow_yi <= 6, "pow_yi must be 1..6");
+        need(pow_xb >= 0 && pow_xb <= pow_yf, "pow_xb must be 0..pow_yf");
+        need(pow_yf >= tbl_aw + (interp ? interp_frac : 1) && pow_yf <= 24,
+             "pow_yf must be tbl_aw + interp_frac (tbl_aw + 1 without interp) .. 24");
+        need(n_w + pow_val_w + pow_yf - pow_xb <= 48, "n_w + pow_val_w + pow_yf - pow_xb must be <= 48");
+        need(rom9_dw() <= 48, "ROM 9 word (the log table's) wider than 48 bits");
+        need(tbl_frac >= 8, "tbl_frac must be >= 8 in pow mode");
+        need(ang_frac <= 29, "ang_frac must be <= 29 in pow mode (pi/2 in the angle format below 2^31)");
+        need(ang_frac - 1 - pow_idx_w - ((1 << pow_seg_w) - 2) >= 0 && ang_frac - 1 - pow_idx_w - pow_frac >= 0,
+             "ang_frac too small for the log table (ang_frac - 1 - pow_idx_w - max(pow_frac, 2^pow_seg_w - 2) < 0)");
+        return;
+    }
     need(rom9_dw() <= 32, "ROM 9 word (scale and table index) wider than 32 bits");
     // The largest scale must fit: sqrt((2^n_w - 1) / k_max) * 2/pi < 2^(scale_w - scale_frac) (for the
     // patent's tables k_max = 16; a table set that serves large n from a small k can still fail in make_rom9).
@@ -60,12 +81,16 @@ void Format::validate() const {
     need(smax < std::ldexp(1.0, scale_w - scale_frac), "scale_w - scale_frac too small for the largest n");
 }
 
+long long Format::pow_half_pi() const { return std::llround(std::ldexp(kPi / 2.0, ang_frac)); }
+
 double rom9_exact(const Format& f, unsigned n) {
+    if (f.pow()) throw std::invalid_argument("rom9_exact: pow mode's ROM 9 holds no scale");
     return table_fits(f).at(n).scale * 2.0 / kPi;
 }
 
 std::vector<uint32_t> make_rom9(const Format& f) {
     f.validate();
+    if (f.pow()) throw std::invalid_argument("make_rom9: pow mode's ROM 9 is the log table (make_pow_log)");
     const std::vector<TableFit>& fits = table_fits(f);
     std::vector<uint32_t> rom(size_t(1) << f.n_w);
     for (size_t n = 0; n < rom.size(); ++n) {
@@ -77,6 +102,7 @@ std::vector<uint32_t> make_rom9(const Format& f) {
 
 std::vector<uint64_t> make_rom12(const Format& f) {
     f.validate();
+    if (f.pow()) return make_pow_exp(f);
     const size_t per = size_t(1) << f.tbl_aw;
     const int ntab = 1 << f.tsel_w();   // the tables of f.tables, then zero tables (never addressed)
     std::vector<uint64_t> rom(size_t(ntab) * per);
@@ -135,6 +161,14 @@ std::string tables_text(const Format& f) {
 // The parameters each image depends on, in the order rtl/spec_rom9.v and rtl/spec_rom12.v read them back
 // ($sscanf at time 0: a simulation whose parameters differ stops with a message naming the file and the field).
 std::string rom9_header(const Format& f) {
+    if (f.pow()) {
+        return "// specrom ROM 9 pow: ang_frac=" + std::to_string(f.ang_frac) + " half_pi=" +
+               std::to_string(f.pow_half_pi()) + " seg_w=" + std::to_string(f.pow_seg_w) + " idx_w=" +
+               std::to_string(f.pow_idx_w) + " val_w=" + std::to_string(f.pow_val_w) + " dlt_w=" +
+               std::to_string(f.pow_dlt_w) + " sh_w=" + std::to_string(f.pow_sh_w) + " xb=" + std::to_string(f.pow_xb) +
+               " words=" + std::to_string(1 << f.rom9_aw()) + " width=" + std::to_string(f.rom9_dw()) +
+               " mode=pow log2cos";
+    }
     return "// specrom ROM 9: n_w=" + std::to_string(f.n_w) + " scale_w=" + std::to_string(f.scale_w) +
            " scale_frac=" + std::to_string(f.scale_frac) + " decoder_rom=" + std::to_string(f.decoder_rom() ? 1 : 0) +
            " tsel_w=" + std::to_string(f.decoder_rom() ? f.tsel_w() : 2) + " words=" + std::to_string(1 << f.n_w) +
@@ -142,6 +176,12 @@ std::string rom9_header(const Format& f) {
 }
 
 std::string rom12_header(const Format& f) {
+    if (f.pow()) {
+        return "// specrom ROM 12 pow: tbl_aw=" + std::to_string(f.tbl_aw) + " tbl_frac=" + std::to_string(f.tbl_frac) +
+               " interp=" + std::to_string(f.interp ? 1 : 0) + " delta_w=" + std::to_string(f.interp ? f.delta_w : 0) +
+               " words=" + std::to_string(1 << f.rom12_aw()) + " width=" + std::to_string(f.rom12_dw()) +
+               " mode=pow exp2";
+    }
     return "// specrom ROM 12: tbl_aw=" + std::to_string(f.tbl_aw) + " tsel_w=" + std::to_string(f.tsel_w()) +
            " tbl_frac=" + std::to_string(f.tbl_frac) + " interp=" + std::to_string(f.interp ? 1 : 0) +
            " delta_w=" + std::to_string(f.interp ? f.delta_w : 0) + " words=" + std::to_string(1 << f.rom12_aw()) +
@@ -178,6 +218,19 @@ std::vector<Param> params(const Format& f) {
                                ": ROM 9's top TSEL_W bits are the table (decoder 10 as a ROM)"
                          : "0: decoder 10's gates (Fig. 10) choose the table"},
         {"TSEL_W", f.decoder_rom() ? f.tsel_w() : 2, "ROM 12 table index width"},
+        {"POW", f.pow() ? 1 : 0,
+         f.pow() ? "pow mode: ROM 9 the log table, multiplier 11 by n, ROM 12 exp2 (docs/pow.md)"
+                 : "0: ROM 9 the scale, ROM 12 the cos^k tables (patent and tuned mode)"},
+        {"POW_SEG_W", f.pow_seg_w, "pow mode: 2^POW_SEG_W segments of the log table per side"},
+        {"POW_IDX_W", f.pow_idx_w, "pow mode: 2^POW_IDX_W entries per segment"},
+        {"POW_FRAC", f.pow_frac, "pow mode: fraction bits of the log table's interpolation"},
+        {"POW_VAL_W", f.pow_val_w, "pow mode: the log table's value field"},
+        {"POW_DLT_W", f.pow_dlt_w, "pow mode: the log table's step field (magnitude; a sign bit above it)"},
+        {"POW_SH_W", f.pow_sh_w, "pow mode: the log table's shift field: L = value * 2^-(POW_XB + shift)"},
+        {"POW_XB", f.pow_xb, "pow mode: the shift field's base"},
+        {"POW_YF", f.pow_yf, "pow mode: fraction bits of y = n * L"},
+        {"POW_YI", f.pow_yi, "pow mode: integer bits of y (y >= 2^POW_YI gives 0)"},
+        {"POW_K", f.pow_half_pi(), "pow mode: pi/2 in the angle format, round(pi/2 * 2^ANG_FRAC)"},
         {"DESC_W", d.width, "spec_stream: descriptor width (s_axis_tdata)"},
         {"DESC_C_LSB", d.c_lsb, "spec_stream descriptor: C at [DESC_C_LSB +: C_W]"},
         {"DESC_N_LSB", d.n_lsb, "spec_stream descriptor: n at [DESC_N_LSB +: N_W]"},
@@ -270,9 +323,14 @@ void write_file(const std::string& path, const std::string& text) {
 void write_all(const Format& f, const std::string& dir, const std::string& rom_dir) {
     f.validate();
     // Build everything first: a range error leaves no file written.
-    const auto r9w = make_rom9(f);
-    const std::string r9 =
-        hex_image(std::vector<uint64_t>(r9w.begin(), r9w.end()), f.rom9_dw(), "ROM 9", rom9_header(f));
+    std::vector<uint64_t> r9w;
+    if (f.pow()) {
+        r9w = make_pow_log(f);
+    } else {
+        const auto w = make_rom9(f);
+        r9w.assign(w.begin(), w.end());
+    }
+    const std::string r9 = hex_image(r9w, f.rom9_dw(), "ROM 9", rom9_header(f));
     const std::string r12 = hex_image(make_rom12(f), f.rom12_dw(), "ROM 12", rom12_header(f));
     const std::string vh = verilog_header(f, rom_dir);
     const std::string h = cpp_header(f);

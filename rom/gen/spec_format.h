@@ -12,18 +12,23 @@
 
 namespace spec {
 
-// How ROM 9 (and the table choice) are filled (docs/tuned.md).
+// How ROM 9 (and the table choice) are filled (docs/tuned.md, docs/pow.md).
 //   patent: ROM 9 holds sqrt(n/k) (the patent's Taylor match), decoder 10 picks k by the Fig. 10 gates.
 //   tuned:  ROM 9 holds, per n, the scale that minimises the worst relative error over the epicentre
 //           (minimax) and, in two extra bits above it, the table that does best: the decoder becomes a ROM
 //           (the patent allows it: "decoder 10 may also be a ROM"). Same datapath, same ROM 12.
-enum class Mode { patent, tuned };
-inline const char* mode_name(Mode m) { return m == Mode::tuned ? "tuned" : "patent"; }
-// Throws std::invalid_argument for anything but "patent" or "tuned".
+//   pow:    cos^n = exp2(n log2 cos): ROM 9 holds -log2 cos of the angle (read every pixel at register 8's angle,
+//           a floating format, interpolated), multiplier 11 multiplies it by n, ROM 12 holds exp2 of minus the
+//           fraction, shifted by the integer part, and multiplier 13 multiplies by C. Every n is computed, no
+//           cos^k approximation (docs/pow.md). The RTL's parameter POW = 1.
+enum class Mode { patent, tuned, pow };
+inline const char* mode_name(Mode m) { return m == Mode::tuned ? "tuned" : m == Mode::pow ? "pow" : "patent"; }
+// Throws std::invalid_argument for anything but "patent", "tuned" or "pow".
 inline Mode parse_mode(const std::string& s) {
     if (s == "patent") return Mode::patent;
     if (s == "tuned") return Mode::tuned;
-    throw std::invalid_argument("unknown mode '" + s + "' (patent, tuned)");
+    if (s == "pow") return Mode::pow;
+    throw std::invalid_argument("unknown mode '" + s + "' (patent, tuned, pow)");
 }
 
 // The patent's four tables of ROM 12 (Fig. 10, Fig. 15).
@@ -65,16 +70,41 @@ struct Format {
     Mode mode = Mode::patent;
     std::vector<int> tables = patent_tables();   // k of each ROM 12 table, strictly increasing, 1..256
 
-    bool decoder_rom() const { return mode == Mode::tuned || tables != patent_tables(); }
+    // Pow mode (mode == Mode::pow, docs/pow.md). ROM 9 is the log table L(t) = -log2 cos: the angle's magnitude a
+    // below 1 rad is t = a itself (side 0), from 1 rad to pi/2 it is t = K - a, K = pi/2 in the angle format
+    // (side 1, where L = -log2 sin t); t < 1 rad either way. Each side has 2^pow_seg_w segments: the octaves
+    // [2^-(j+1), 2^-j) rad, j = 0 .. 2^pow_seg_w - 2, and the interval below the last octave; each segment has
+    // 2^pow_idx_w equidistant entries, interpolated linearly with pow_frac fraction bits of the position. A word
+    // holds {shift s (pow_sh_w bits), sign of the step, |step| (pow_dlt_w bits), value V (pow_val_w bits)} with
+    // L = V * 2^-(pow_xb + s); the step is the next entry's value minus this one's, in this entry's scale.
+    // y = n * L is formed with pow_yf fraction bits; y >= 2^pow_yi gives 0. ROM 12 holds 2^-f, f = y's fraction,
+    // over 2^tbl_aw positions (UQ1.tbl_frac; with interp its step to the next position, as in patent mode).
+    int pow_seg_w = 3;
+    int pow_idx_w = 6;
+    int pow_frac = 10;
+    int pow_val_w = 16;
+    int pow_dlt_w = 14;
+    int pow_sh_w = 5;
+    int pow_xb = 12;
+    int pow_yf = 18;
+    int pow_yi = 5;
+
+    bool pow() const { return mode == Mode::pow; }
+    bool decoder_rom() const { return mode == Mode::tuned || (mode == Mode::patent && tables != patent_tables()); }
     int tsel_w() const {                                  // width of the table index (>= 1)
         int w = 1;
         while ((size_t(1) << w) < tables.size()) ++w;
         return w;
     }
-    int rom9_dw() const { return scale_w + (decoder_rom() ? tsel_w() : 0); }  // {table index, scale}
+    // ROM 9: {table index, scale}; pow mode: the log table's word, addressed by {side, segment, entry}
+    int rom9_dw() const { return pow() ? pow_sh_w + 1 + pow_dlt_w + pow_val_w : scale_w + (decoder_rom() ? tsel_w() : 0); }
+    int rom9_aw() const { return pow() ? 1 + pow_seg_w + pow_idx_w : n_w; }
     int tbl_dw() const { return tbl_frac + 1; }
     int rom12_dw() const { return tbl_dw() + (interp ? delta_w : 0); }
-    int rom12_aw() const { return tbl_aw + tsel_w(); }    // {table index, position (tbl_aw bits)}
+    // {table index, position (tbl_aw bits)}; pow mode: one table (exp2), the position alone
+    int rom12_aw() const { return tbl_aw + (pow() ? 0 : tsel_w()); }
+    // pow mode: pi/2 in the angle format (round(pi/2 * 2^ang_frac)), the constant K of the log table's side 1
+    long long pow_half_pi() const;
     int prod_frac() const { return ang_frac + scale_frac; }  // fraction bits of multiplier 11's product
     int mul13_shift() const { return c_w + tbl_frac - out_w; }
 
@@ -111,9 +141,23 @@ struct Format {
     //                     registers and ROM 9 1, spec_datapath with PIPE = 0, output register 1);
     //   stream_seq_gap:   spec_stream_seq, clocks without a pixel between two spans when the next descriptor
     //                     waits and the sink is ready (the last pixel leaves the datapath, then s_axis_tready).
-    int datapath_latency() const { return 7 + 2 + (interp ? 2 : 0) + 3; }
+    //   pow mode: spec_powpath's stages instead of spec_datapath's (pow_latency; docs/pow.md).
+    int datapath_latency() const { return pow() ? pow_latency(false) : 7 + 2 + (interp ? 2 : 0) + 3; }
     int unit_first_pixel() const { return datapath_latency() + 3; }
-    int stream_datapath_latency() const { return datapath_latency() + 2 + (interp ? 2 : 0); }
+    int stream_datapath_latency() const {
+        return pow() ? pow_latency(true) : datapath_latency() + 2 + (interp ? 2 : 0);
+    }
+    // spec_powpath's latency (rtl/spec_powpath.v), pipe: PIPE = 1 (spec_stream: a register after each DSP block,
+    // a second one on each interpolated table's word). Front end 3 (|angle| and K - |angle|, side), normalization
+    // pow_seg_w, ROM 9 with its register(s), interpolation 2, multiplier by n 2 (input and product registers), the
+    // alignment shift (two levels of pow_sh_w a stage), ROM 12's position (plain: rounding 1), ROM 12 with its
+    // register(s), [interpolation 2], the shift by y's integer part (two levels a stage, the last in front of
+    // multiplier 13) pow_yi / 2, multiplier 13 3.
+    int pow_latency(bool pipe) const {
+        const int p = pipe ? 1 : 0;
+        return 3 + pow_seg_w + (1 + 1 + p) + (2 + p) + (2 + p) + (pow_sh_w + 1) / 2 + (interp ? 0 : 1) +
+               (1 + 1 + (interp ? p : 0)) + (interp ? 2 + p : 0) + pow_yi / 2 + (3 + p);
+    }
     int stream_acc() const { return (ang_w + l_w + 11) / 12 + 4; }
     int stream_latency() const { return 4 + stream_acc() + stream_datapath_latency(); }
     int stream_seq_latency() const { return datapath_latency() + 2; }
@@ -125,7 +169,9 @@ struct Format {
 
 // Named configurations. "default" is the patent's plain lookup (the committed ROM images in rom/);
 // "up5k" fits the iCE40 UP5K's block RAM (ROM 12 of 4 x 256 words with interpolation, a 16-bit ROM 9)
-// and keeps the same accuracy bound (docs/decisions.md, docs/stream.md).
+// and keeps the same accuracy bound (docs/decisions.md, docs/stream.md). Either configuration in pow mode
+// (mode = Mode::pow): ROM 9 is the log table (2 x 8 x 64 entries; up5k 2 x 8 x 32), ROM 12 the exp2 table of
+// the configuration's size (docs/pow.md).
 inline Format config_format(const std::string& name) {
     Format f;
     if (name == "default") return f;
@@ -136,6 +182,7 @@ inline Format config_format(const std::string& name) {
         f.delta_w = 10;
         f.scale_w = 16;
         f.scale_frac = 13;
+        f.pow_idx_w = 5;   // pow mode: ROM 9 of 2 x 8 x 32 words (five SB_RAM40_4K with ROM 12's two, docs/pow.md)
         return f;
     }
     throw std::invalid_argument("unknown configuration '" + name + "' (default, up5k)");

@@ -4,6 +4,8 @@
 //           [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]
 //           [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]
 //           [--interp [--interp-frac N] [--delta-w N]] [--rom-path PREFIX]
+//           [--pow-seg-w N] [--pow-idx-w N] [--pow-frac N] [--pow-val-w N] [--pow-dlt-w N] [--pow-sh-w N]
+//           [--pow-xb N] [--pow-yf N] [--pow-yi N]
 //
 // spec_params.vh names the images as PREFIX + file name (SPEC_ROM9_FILE, SPEC_ROM12_FILE); PREFIX defaults to the
 // absolute path of DIR, so a simulation that includes DIR's header finds the images from any working directory.
@@ -11,6 +13,7 @@
 //
 // --mode tuned: ROM 9 holds the minimax scale per n and the table index (decoder 10 as a ROM; docs/tuned.md).
 // --tables: the powers k of ROM 12's tables (default 1,2,4,16); any other set also puts the table into ROM 9.
+// --mode pow: ROM 9 the log table, ROM 12 exp2 (docs/pow.md); --pow-*: its formats (spec_format.h).
 //
 // With no options it writes the default images (the ones committed in rom/) into the current directory.
 // Bad input: a one-line message on stderr and exit code 2; nothing is written.
@@ -35,6 +38,8 @@ int main(int argc, char** argv) {
                              "               [--tbl-aw N] [--tbl-frac N] [--scale-w N] [--scale-frac N]\n"
                              "               [--c-w N] [--ang-w N] [--ang-frac N] [--n-w N] [--l-w N]\n"
                              "               [--interp [--interp-frac N] [--delta-w N]] [--rom-path PREFIX]\n"
+                             "               [--mode pow [--pow-seg-w N] [--pow-idx-w N] [--pow-frac N] [--pow-val-w N]\n"
+                             "                [--pow-dlt-w N] [--pow-sh-w N] [--pow-xb N] [--pow-yf N] [--pow-yi N]]\n"
                              "Writes rom9_scale.hex, rom12_cosk.hex, spec_params.vh and spec_params.h into DIR.\n"
                              "spec_params.vh names the images PREFIX + file name; PREFIX defaults to DIR's absolute\n"
                              "path with a trailing '/', so the header works from any working directory.\n";
@@ -64,6 +69,15 @@ int main(int argc, char** argv) {
                          : fl == "--l-w"        ? &f.l_w
                          : fl == "--interp-frac" ? &f.interp_frac
                          : fl == "--delta-w"    ? &f.delta_w
+                         : fl == "--pow-seg-w"  ? &f.pow_seg_w
+                         : fl == "--pow-idx-w"  ? &f.pow_idx_w
+                         : fl == "--pow-frac"   ? &f.pow_frac
+                         : fl == "--pow-val-w"  ? &f.pow_val_w
+                         : fl == "--pow-dlt-w"  ? &f.pow_dlt_w
+                         : fl == "--pow-sh-w"   ? &f.pow_sh_w
+                         : fl == "--pow-xb"     ? &f.pow_xb
+                         : fl == "--pow-yf"     ? &f.pow_yf
+                         : fl == "--pow-yi"     ? &f.pow_yi
                                                 : nullptr;
             if (!field) throw UsageError("unknown option " + fl);
             *field = static_cast<int>(parse_int(fl, a.value(fl), 0, 64));

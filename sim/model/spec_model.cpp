@@ -8,7 +8,9 @@
 
 namespace spec {
 
-Model::Model(const Format& f) : f_(f), rom9_(make_rom9(f)), rom12_(make_rom12(f)) {}
+Model::Model(const Format& f)
+    : f_(f), rom9_(f.pow() ? std::vector<uint32_t>() : make_rom9(f)), log_(f.pow() ? make_pow_log(f) : std::vector<uint64_t>()),
+      rom12_(make_rom12(f)) {}
 
 int64_t Model::accumulate(int64_t angle, int64_t dzeta) const {
     int64_t s = angle + dzeta;  // ang_w <= 40, no host overflow
@@ -18,6 +20,7 @@ int64_t Model::accumulate(int64_t angle, int64_t dzeta) const {
 }
 
 TablePos Model::mul11(int64_t angle, unsigned n) const {
+    if (f_.pow()) throw std::logic_error("Model::mul11: pow mode's multiplier 11 multiplies by n (pow_y)");
     const uint64_t mag = static_cast<uint64_t>(angle < 0 ? -angle : angle);   // |register 8|, cos is even
     const unsigned __int128 prod = static_cast<unsigned __int128>(mag) * scale_word(n);
     const int pf = f_.prod_frac();
@@ -37,6 +40,7 @@ TablePos Model::mul11(int64_t angle, unsigned n) const {
 }
 
 int Model::table(unsigned n) const {
+    if (f_.pow()) throw std::logic_error("Model::table: pow mode has no cos^k tables");
     return f_.decoder_rom() ? static_cast<int>(rom9_.at(n) >> f_.scale_w) : table_of_n(n);
 }
 
@@ -59,7 +63,57 @@ uint32_t Model::mul13(uint32_t c, uint32_t table, bool zero) const {
     return static_cast<uint32_t>(sh == 0 ? prod : (prod + (uint64_t(1) << (sh - 1))) >> sh);
 }
 
+uint32_t Model::pow_log(const PowPos& p, uint32_t* shift) const {
+    const PowWord w = PowWord::unpack(f_, log_.at(p.address(f_)));
+    const uint64_t prod = uint64_t(w.dlt) * p.frac;
+    const uint32_t r = static_cast<uint32_t>((prod + (uint64_t(1) << (f_.pow_frac - 1))) >> f_.pow_frac);
+    *shift = w.shift;
+    // the step is at most |step| and lies between this entry's value and the next's: no wrap
+    return w.neg ? w.val - r : w.val + r;
+}
+
+uint64_t Model::pow_y(uint32_t v, uint32_t shift, unsigned n, bool* overflow) const {
+    const uint64_t p = (uint64_t(n) * v) << (f_.pow_yf - f_.pow_xb);
+    const uint64_t y = p >> shift;
+    *overflow = (y >> (f_.pow_yi + f_.pow_yf)) != 0;
+    return y & ((uint64_t(1) << (f_.pow_yi + f_.pow_yf)) - 1);
+}
+
+uint32_t Model::pow_exp(uint64_t y, bool* zero) const {
+    const int yf = f_.pow_yf, aw = f_.tbl_aw;
+    uint64_t whole = y >> yf;
+    const uint64_t frac = y & ((uint64_t(1) << yf) - 1);
+    uint32_t b;
+    if (f_.interp) {
+        const uint64_t pos = frac >> (yf - aw);
+        const uint32_t fr = static_cast<uint32_t>((frac >> (yf - aw - f_.interp_frac)) & ((uint64_t(1) << f_.interp_frac) - 1));
+        b = interpolate(rom12_.at(pos), fr);
+    } else {
+        // the nearest position: ((frac >> (yf - aw - 1)) + 1) >> 1; 2^aw is position 0 of the next integer
+        uint64_t pos = (frac >> (yf - aw)) + ((frac >> (yf - aw - 1)) & 1);
+        whole += pos >> aw;
+        pos &= (uint64_t(1) << aw) - 1;
+        b = static_cast<uint32_t>(rom12_.at(pos) & ((uint64_t(1) << f_.tbl_dw()) - 1));
+    }
+    *zero = (whole >> f_.pow_yi) != 0;
+    return *zero ? 0 : static_cast<uint32_t>(uint64_t(b) >> whole);   // whole < 2^pow_yi <= 64
+}
+
+uint32_t Model::pow_value(int64_t angle, unsigned n) const {
+    const PowPos p = pow_position(f_, angle);
+    uint32_t shift;
+    const uint32_t v = pow_log(p, &shift);
+    bool ovf, big;
+    const uint32_t b = pow_exp(pow_y(v, shift, n, &ovf), &big);
+    return (p.past && n != 0) || ovf || big ? 0 : b;
+}
+
+uint32_t Model::pow_pixel(uint32_t c, int64_t angle, unsigned n) const {
+    return mul13(c, pow_value(angle, n), false);
+}
+
 uint32_t Model::pixel(uint32_t c, int64_t angle, unsigned n) const {
+    if (f_.pow()) return pow_pixel(c, angle, n);
     const TablePos p = mul11(angle, n);
     return mul13(c, interpolate(rom12(n, p), p.frac), p.zero);
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pow_table.h"
 #include "spec_format.h"
 
 namespace spec {
@@ -45,8 +46,22 @@ public:
     uint32_t interpolate(uint64_t word, uint32_t frac) const;
     // Multiplier 13: round(C * table / 2^mul13_shift), 0 when the position is past pi/2.
     uint32_t mul13(uint32_t c, uint32_t table, bool zero) const;
-    // The whole datapath after register 8.
+    // The whole datapath after register 8 (spec_datapath; in pow mode spec_powpath).
     uint32_t pixel(uint32_t c, int64_t angle, unsigned n) const;
+
+    // Pow mode (docs/pow.md, rtl/spec_powpath.v), stage by stage:
+    // ROM 9 at the angle's position, interpolated: the value V (pow_val_w bits) of L = V * 2^-(pow_xb + shift).
+    uint32_t pow_log(const PowPos& p, uint32_t* shift) const;
+    // Multiplier 11 and the alignment: y = floor(n V 2^(pow_yf - pow_xb - shift)), y with pow_yf fraction bits;
+    // *overflow when y >= 2^(pow_yi + pow_yf) (the pixel is then 0).
+    uint64_t pow_y(uint32_t v, uint32_t shift, unsigned n, bool* overflow) const;
+    // ROM 12 at y's fraction (rounded to the nearest position, or interpolated with interp), shifted right by y's
+    // integer part: 2^-y in UQ1.tbl_frac, what multiplier 13 multiplies by C. *zero when the integer part (after
+    // the rounding's carry) reaches 2^pow_yi.
+    uint32_t pow_exp(uint64_t y, bool* zero) const;
+    // The value before multiplier 13 for an angle and n (0 where the pixel is 0), and the pixel.
+    uint32_t pow_value(int64_t angle, unsigned n) const;
+    uint32_t pow_pixel(uint32_t c, int64_t angle, unsigned n) const;
     // The l + 1 pixels of one span, in order.
     std::vector<uint32_t> span(const SpanRegs& r) const;
     // Register 8's value for pixel i of the span (with saturation).
@@ -56,6 +71,7 @@ public:
     uint32_t scale_word(unsigned n) const { return rom9_.at(n) & ((uint32_t(1) << f_.scale_w) - 1); }
     const std::vector<uint32_t>& rom9() const { return rom9_; }
     const std::vector<uint64_t>& rom12() const { return rom12_; }
+    const std::vector<uint64_t>& pow_log_rom() const { return log_; }   // pow mode's ROM 9
 
     // Host-side quantization (what specsim does before writing the registers).
     int64_t angle_min() const { return -(int64_t(1) << (f_.ang_w - 1)); }
@@ -70,7 +86,8 @@ public:
 
 private:
     Format f_;
-    std::vector<uint32_t> rom9_;
+    std::vector<uint32_t> rom9_;   // patent and tuned mode
+    std::vector<uint64_t> log_;    // pow mode
     std::vector<uint64_t> rom12_;
 };
 

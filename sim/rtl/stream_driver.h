@@ -99,6 +99,33 @@ public:
     // One clock; afterwards the outputs show the next cycle.
     void step() { h_.tick(); }
 
+    // Cycles from the descriptor r taken by the idle core (in cycle a) to its first pixel on m_axis (in cycle a +
+    // this): the latency spec_params::STREAM_LATENCY names (stalls none; the span is drained afterwards).
+    int first_pixel(const SpanRegs& r, int max_cycles = 300) {
+        uint32_t w[kDescWords];
+        pack_descriptor(r, w);
+        V& t = h_.top();
+        for (int i = 0; i < kDescWords; ++i) t.s_axis_tdata[i] = w[i];
+        t.m_axis_tready = 1;
+        t.s_axis_tvalid = 0;
+        t.eval();
+        for (int i = 0; i < 4 && !t.s_axis_tready; ++i) step();  // tready rises the second cycle after a reset
+        t.s_axis_tvalid = 1;
+        t.eval();
+        if (!t.s_axis_tready) throw StreamError("first_pixel: the core does not take a descriptor");
+        step();  // accepted at this edge: cycle a
+        t.s_axis_tvalid = 0;
+        int at = 1;
+        t.eval();
+        while (!t.m_axis_tvalid && at < max_cycles) {
+            step();
+            t.eval();
+            ++at;
+        }
+        for (int i = 0; i < int(r.len) + max_cycles; ++i) step();  // drain
+        return at;
+    }
+
     // Runs the spans through, with random stalls on both sides, and returns the pixels in order. After the
     // last expected pixel the sink stays ready for kDrainCycles more cycles: a pixel in that time, or a beat
     // that breaks the rules below, throws StreamError. Each beat: m_axis_tkeep holds slots 0 .. k-1 (k >= 1);

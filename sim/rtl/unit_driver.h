@@ -12,6 +12,7 @@
 
 class Vspec_unit;
 class Vspec_unit_tuned;
+class Vspec_unit_pow;
 
 namespace spec {
 template <class V>
@@ -28,8 +29,8 @@ struct CtrlSignals {
     uint32_t intensity;
 };
 
-// V: the Verilated spec_unit class (Vspec_unit: the patent's default; Vspec_unit_tuned: tuned mode).
-// Instantiated for both in unit_driver.cpp and unit_driver_tuned.cpp.
+// V: the Verilated spec_unit class (Vspec_unit: the patent's default; Vspec_unit_tuned: tuned mode;
+// Vspec_unit_pow: pow mode). Instantiated in unit_driver.cpp, unit_driver_tuned.cpp and unit_driver_pow.cpp.
 template <class V>
 class UnitDriverT : public SpanCore {
 public:
@@ -57,6 +58,9 @@ public:
     std::vector<uint32_t> run(uint64_t max_cycles = 0);
     // write() then run().
     std::vector<uint32_t> span(const SpanRegs& r) override { write(r); return run(); }
+    // write() and a Start, then the cycles (counted from Start's edge, 1 = the cycle after it) in which valid_o is
+    // 1, until busy_o falls (at most max_cycles): the core's latencies as a test sees them.
+    std::vector<int> valid_cycles(const SpanRegs& r, int max_cycles = 1000);
 
     CtrlSignals signals() const;
     uint64_t cycle() const override;
@@ -70,10 +74,12 @@ private:
 
 using UnitDriver = UnitDriverT<Vspec_unit>;              // the patent's configuration (rom/)
 using UnitDriverTuned = UnitDriverT<Vspec_unit_tuned>;   // tuned mode (docs/tuned.md; build-tree ROM images)
+using UnitDriverPow = UnitDriverT<Vspec_unit_pow>;       // pow mode (docs/pow.md; build-tree ROM images)
 extern template class UnitDriverT<Vspec_unit>;          // instantiated in unit_driver.cpp
-extern template class UnitDriverT<Vspec_unit_tuned>;    // and unit_driver_tuned.cpp
+extern template class UnitDriverT<Vspec_unit_tuned>;    // unit_driver_tuned.cpp
+extern template class UnitDriverT<Vspec_unit_pow>;      // and unit_driver_pow.cpp
 
-// The Verilated spec_unit of the given mode (defined with the tuned model, unit_driver_tuned.cpp).
+// The Verilated spec_unit of the given mode (defined with the pow model, unit_driver_pow.cpp).
 std::unique_ptr<SpanCore> make_unit_driver(Mode mode, const std::string& vcd_path = "");
 
 }  // namespace spec

@@ -94,6 +94,20 @@ std::vector<uint32_t> UnitDriverT<V>::run(uint64_t max_cycles) {
 }
 
 template <class V>
+std::vector<int> UnitDriverT<V>::valid_cycles(const SpanRegs& r, int max_cycles) {
+    write(r);
+    V& t = h_->top();
+    t.start = 1;
+    step();
+    std::vector<int> at;
+    for (int c = 1; t.busy_o && c <= max_cycles; ++c) {
+        if (t.valid_o) at.push_back(c);
+        step();
+    }
+    return at;
+}
+
+template <class V>
 CtrlSignals UnitDriverT<V>::signals() const {
     const V& t = h_->top();
     const auto* r = t.rootp;

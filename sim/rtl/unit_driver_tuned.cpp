@@ -1,5 +1,5 @@
 // unit_driver_tuned.cpp - UnitDriverTuned: the driver of spec_unit Verilated in tuned mode (Vspec_unit_tuned,
-// DECODER_ROM = 1, ROM images from `specrom --mode tuned` in the build tree), and make_unit_driver.
+// DECODER_ROM = 1, ROM images from `specrom --mode tuned` in the build tree).
 #include "Vspec_unit_tuned.h"
 #include "Vspec_unit_tuned___024root.h"
 #include "unit_driver_impl.h"
@@ -7,8 +7,4 @@
 namespace spec {
 template class UnitDriverT<Vspec_unit_tuned>;
 
-std::unique_ptr<SpanCore> make_unit_driver(Mode mode, const std::string& vcd_path) {
-    if (mode == Mode::tuned) return std::unique_ptr<SpanCore>(new UnitDriverTuned(vcd_path));
-    return std::unique_ptr<SpanCore>(new UnitDriver(vcd_path));
-}
 }  // namespace spec

@@ -29,7 +29,14 @@ struct AccuracyResult {
     std::vector<AccuracyRow> rows;   // n = 1, 2, 3..6, 7..1000, 1001..1023, 0
     double worst_extra = 0;          // largest (core rel. error - q) over n: what fixed point adds in the epicentre
     unsigned worst_extra_n = 0;
+    // pow mode: every angle and every n (pow_exhaustive, the bit-exact model), and the worst over n
+    bool pow = false;
+    PowExhaustive every;
+    double every_worst = 0, every_rel = 0;
+    unsigned every_worst_n = 0, every_rel_n = 0;
 };
+// pow mode's goal (issue 30): every pixel within 0.1 % of C + 2^-14; the stretch goal 0.025 % of C + 2^-14.
+constexpr double kPowGoal = 0.001, kPowStretch = 0.00025;
 // core: the spans' runner for the rtl model (the Verilated spec_unit of the options' mode); null: the bit-exact
 // model of the options' format.
 AccuracyResult accuracy(const AccuracyOptions& o, SpanCore* core = nullptr);

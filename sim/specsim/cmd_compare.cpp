@@ -14,8 +14,10 @@
 namespace spec {
 
 const char* const kTunedUsage =
-    "  compare  patent mode, tuned mode and the prototype (one table cos^2, scale sqrt(n/2)) on the same\n"
-    "           datapath, worst errors per BRDF range: double precision and the fixed-point core (bit-exact)\n"
+    "  compare  patent mode, tuned mode, pow mode and the prototype (one table cos^2, scale sqrt(n/2)) on the\n"
+    "           same datapath, and a per-material table of 256 entries indexed by N.H (the PICA200's way),\n"
+    "           worst errors per BRDF range on the same spans: double precision and fixed point (the cores\n"
+    "           bit-exact), ROM bits, the cost of a material change\n"
     "           --points P (100..100000, default 4000: pixels over [0, pi/2] per n, as accuracy)\n"
     "           --epi-points E (0..100000, default 0: also a span over the epicentre alone)\n"
     "  tables   other table sets and table sizes: worst epicentre error (double, fixed point) against ROM bits,\n"
@@ -65,16 +67,27 @@ Format sized_format(Mode mode, const std::vector<int>& tables, int tbl_aw, bool 
 }
 
 std::vector<CompareColumn> compare_modes(uint32_t points, uint32_t epi) {
-    Format tuned;
+    Format tuned, pow;
     tuned.mode = Mode::tuned;
+    pow.mode = Mode::pow;
     std::vector<CompareColumn> cols{{"prototype", sized_format(Mode::patent, {2}, Format().tbl_aw, false), {}, {}},
                                     {"patent", Format(), {}, {}},
-                                    {"tuned", tuned, {}, {}}};
+                                    {"tuned", tuned, {}, {}},
+                                    {"pow", pow, {}, {}}};
     for (CompareColumn& c : cols) {
         c.dbl = mode_errors(c.f);
         c.core = core_errors(Model(c.f), points, epi);
     }
     return cols;
+}
+
+CompareLut compare_lut(uint32_t points, uint32_t epi) {
+    const Model m;
+    return {lut_errors(m, points, epi, false), lut_errors(m, points, epi, true)};
+}
+
+double rom_bits(const Format& f) {
+    return std::ldexp(double(f.rom9_dw()), f.rom9_aw()) + std::ldexp(double(f.rom12_dw()), f.rom12_aw());
 }
 
 namespace {
@@ -84,9 +97,10 @@ std::string pct(const Worst& w) {
     return b;
 }
 
-void report_compare(const std::vector<CompareColumn>& cols, long long points, long long epi) {
-    std::printf("Patent mode, tuned mode and the prototype on the same datapath (ROM 12 of 2^%d positions per "
-                "table, 17-bit words; the prototype: one table cos^2, ROM 9 = sqrt(n/2) * 2/pi in UQ%d.%d).\n"
+void report_compare(const std::vector<CompareColumn>& cols, const CompareLut& lut, long long points, long long epi) {
+    std::printf("Patent mode, tuned mode, pow mode and the prototype on the same datapath (ROM 12 of 2^%d positions per "
+                "table, 17-bit words; the prototype: one table cos^2, ROM 9 = sqrt(n/2) * 2/pi in UQ%d.%d; pow mode:\n"
+                "ROM 9 the log table, ROM 12 exp2, docs/pow.md).\n"
                 "double: the approximation alone; core: the bit-exact model (= the RTL), %lld pixels over "
                 "[0, pi/2]%s per n, C = 1 - 2^-16, against C cos^n in double precision.\n\n",
                 Format().tbl_aw, cols[0].f.scale_w - cols[0].f.scale_frac, cols[0].f.scale_frac, points,
@@ -94,7 +108,7 @@ void report_compare(const std::vector<CompareColumn>& cols, long long points, lo
     for (int table = 0; table < 2; ++table) {
         std::printf(table == 0 ? "Worst relative error in the epicentre:\n\n" : "\nWorst absolute error / C on [0, pi/2]:\n\n");
         std::printf("| BRDF range | prototype, double | prototype, core | patent, double | patent, core | "
-                    "tuned, double | tuned, core |\n|---|---|---|---|---|---|---|\n");
+                    "tuned, double | tuned, core | pow, double | pow, core |\n|---|---|---|---|---|---|---|---|---|\n");
         for (const BrdfRange& r : kBrdfRanges) {
             std::printf("| %s |", r.name);
             for (const CompareColumn& c : cols) {
@@ -105,8 +119,30 @@ void report_compare(const std::vector<CompareColumn>& cols, long long points, lo
             std::printf("\n");
         }
     }
-}
-}  // namespace
+    // the choices side by side: each core in fixed point (what the hardware gives), the per-material table in
+    // double and in its fixed point; ROM bits; what changing the material (n) costs
+    std::printf("\nThe choices on the same spans, fixed point (the cores bit-exact; the per-material table: 256 entries "
+                "of 12-bit value and 12-bit difference indexed by N.H, interpolated, as the PICA200's lighting tables; "
+                "also in double). Each cell: worst relative error in the epicentre / worst absolute error / C on "
+                "[0, pi/2].\n\n");
+    std::printf("| BRDF range | prototype (cos^2) | patent | tuned | pow | per-material table, double | "
+                "per-material table, fixed point |\n|---|---|---|---|---|---|---|\n");
+    auto pair = [&](const CoreErrors& e, const BrdfRange& r) {
+        return pct(worst_of(e.rel_in, r.lo, r.hi)) + " / " + pct(worst_of(e.abs_all, r.lo, r.hi));
+    };
+    for (const BrdfRange& r : kBrdfRanges) {
+        std::printf("| %s |", r.name);
+        for (const CompareColumn& c : cols) std::printf(" %s |", pair(c.core, r).c_str());
+        std::printf(" %s | %s |\n", pair(lut.dbl, r).c_str(), pair(lut.fixed, r).c_str());
+    }
+    std::printf("| ROM bits |");
+    for (const CompareColumn& c : cols) std::printf(" %.0f |", rom_bits(c.f));
+    std::printf(" %d per material | %d per material |\n", MaterialLut::bits(), MaterialLut::bits());
+    std::printf("| a material change (n) |");
+    for (size_t i = 0; i < cols.size(); ++i) std::printf(" n in the span's descriptor (none) |");
+    std::printf(" the table reloaded: %d entries | the table reloaded: %d entries (%d bits) |\n", MaterialLut::kEntries,
+                MaterialLut::kEntries, MaterialLut::bits());
+}}  // namespace
 
 int cmd_compare(int argc, char** argv) {
     long long points = 4000, epi = 0;
@@ -117,7 +153,8 @@ int cmd_compare(int argc, char** argv) {
         else if (fl == "--epi-points") epi = parse_int(fl, a.value(fl), 0, 100000);
         else throw UsageError("compare: unknown option " + fl);
     }
-    report_compare(compare_modes(uint32_t(points), uint32_t(epi)), points, epi);
+    report_compare(compare_modes(uint32_t(points), uint32_t(epi)), compare_lut(uint32_t(points), uint32_t(epi)), points,
+                   epi);
     return 0;
 }
 

@@ -12,7 +12,8 @@ namespace spec {
 
 const char* const kFig8Usage =
     "  fig8     the recomputed Fig. 8 table and q(n), a(n) for the Fig. 10 rule (--all: every n)\n"
-    "           --mode tuned: the same with the minimax scale (docs/tuned.md)\n";
+    "           --mode tuned: the same with the minimax scale (docs/tuned.md); --mode pow: pow mode has no\n"
+    "           tables k: its approximation's errors per BRDF range (docs/pow.md)\n";
 
 namespace {
 struct Fig8Options {

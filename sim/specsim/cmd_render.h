@@ -51,6 +51,8 @@ struct ModelResult {
     render::SpecRun run;
     render::Image img;
     render::ImageStats st;   // against ref (when compared)
+    bool pow_column = false;  // the pow column of the comparison: the golden model in pow mode (docs/pow.md)
+    const char* name() const { return pow_column ? "pow" : render::model_name(model); }
 };
 struct RenderResult {
     render::Frame frame;
@@ -59,8 +61,11 @@ struct RenderResult {
     bool compared = false;                  // the comparison models were rendered (--panel, --stats)
     bool culled = false;
     methods::CullResult cull;               // --cull-specular
-    std::vector<ModelResult> results;       // the chosen model first, then ref, golden, prototype, host
-    const ModelResult* find(render::SpecModel m) const;
+    // the chosen model first, then ref, golden, prototype, host, and (unless the chosen mode is pow) the golden
+    // model in pow mode, the panel's pow column
+    std::vector<ModelResult> results;
+    const ModelResult* find(render::SpecModel m) const;   // the first of model m (not the pow column)
+    const ModelResult* find_pow() const;                  // the pow column, or null
 };
 // What runs the spans of the rtl model: a core of the given mode (the Verilated spec_unit in specsim).
 using CoreFactory = std::function<std::unique_ptr<SpanCore>(Mode)>;

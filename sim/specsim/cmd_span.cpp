@@ -12,6 +12,8 @@
 #include "Vspec_stream_l2.h"
 #include "Vspec_stream_l4.h"
 #include "Vspec_stream_l4p.h"
+#include "Vspec_stream_pow.h"
+#include "Vspec_stream_pow_l4p.h"
 #include "Vspec_stream_tuned.h"
 #include "cli.h"
 #include "commands.h"
@@ -31,9 +33,10 @@ const char* const kSpanUsage =
     "                        golden (bit-exact C++ model) |\n"
     "                        ref (double precision C * max(0, cos(zeta0 + i*dzeta))^n)\n"
     "           --mode M     patent (default: ROM 9 holds sqrt(n/k), Fig. 10 decoder) | tuned (minimax scale and\n"
-    "                        table in ROM 9, the RTL Verilated with DECODER_ROM = 1; docs/tuned.md)\n"
-    "           --lanes N    with --model stream: spec_stream with LANES = N pixels per beat (1, 2, 4; patent\n"
-    "                        mode); the same pixels as --model rtl\n"
+    "                        table in ROM 9, the RTL Verilated with DECODER_ROM = 1; docs/tuned.md) | pow\n"
+    "                        (exp2(n log2 cos): ROM 9 the log table, the RTL Verilated with POW = 1; docs/pow.md)\n"
+    "           --lanes N    with --model stream: spec_stream with LANES = N pixels per beat (1, 2, 4 in patent\n"
+    "                        mode; 1, and 4 with --pack, in pow mode); the same pixels as --model rtl\n"
     "           --pack       with --model stream --lanes 4: PACK = 1 (a beat may end one span and start the next)\n"
     "           --vcd FILE   with --model rtl: write a waveform of the run\n";
 
@@ -104,7 +107,10 @@ SpanOptions parse_span(int argc, char** argv) {
     }
     if (!s.vcd.empty() && s.model != "rtl") throw UsageError("--vcd: only with --model rtl");
     if (s.lanes != 1 && s.model != "stream") throw UsageError("--lanes: only with --model stream");
-    if (s.lanes != 1 && s.mode != Mode::patent) throw UsageError("--lanes: only in patent mode");
+    if (s.lanes != 1 && s.mode == Mode::tuned) throw UsageError("--lanes: only in patent and pow mode");
+    if (s.mode == Mode::pow && s.lanes != 1 && !(s.lanes == 4 && s.pack)) {
+        throw UsageError("--lanes: pow mode's spec_stream is Verilated with LANES = 1, and 4 with --pack");
+    }
     if (s.pack && (s.model != "stream" || s.lanes != 4)) throw UsageError("--pack: only with --model stream --lanes 4");
     return s;
 }
@@ -118,6 +124,8 @@ std::vector<uint32_t> span_pixels(const SpanOptions& s) {
         core.reset(new ModelCore(m));
     } else if (s.model == "stream") {
         if (s.mode == Mode::tuned) core.reset(new StreamCore<Vspec_stream_tuned>());
+        else if (s.mode == Mode::pow && s.lanes == 4) core.reset(new StreamCore<Vspec_stream_pow_l4p, 4, true>());
+        else if (s.mode == Mode::pow) core.reset(new StreamCore<Vspec_stream_pow>());
         else if (s.lanes == 2) core.reset(new StreamCore<Vspec_stream_l2, 2>());
         else if (s.lanes == 4 && s.pack) core.reset(new StreamCore<Vspec_stream_l4p, 4, true>());
         else if (s.lanes == 4) core.reset(new StreamCore<Vspec_stream_l4, 4>());

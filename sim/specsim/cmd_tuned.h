@@ -27,7 +27,8 @@ Worst worst_of(const std::vector<double>& v, unsigned lo, unsigned hi);
 // as the contents allow, so that ROM bits compare fairly. The patent's set keeps its 18-bit UQ3.15 word.
 Format sized_format(Mode mode, const std::vector<int>& tables, int tbl_aw, bool interp);
 
-// compare: the three columns (prototype, patent, tuned) in double precision and through the bit-exact core.
+// compare: the columns (prototype, patent, tuned, pow) in double precision and through the bit-exact core, and the
+// per-material table (MaterialLut, the PICA200's way) in double and in its fixed point, on the same spans.
 struct CompareColumn {
     std::string name;
     Format f;
@@ -35,6 +36,12 @@ struct CompareColumn {
     CoreErrors core;
 };
 std::vector<CompareColumn> compare_modes(uint32_t points, uint32_t epi_points);
+struct CompareLut {
+    CoreErrors dbl, fixed;
+};
+CompareLut compare_lut(uint32_t points, uint32_t epi_points);
+// ROM bits of a column's core: ROM 9 and ROM 12 (the words the generator writes)
+double rom_bits(const Format& f);
 
 // tables: one row per (table set, mode, ROM 12 size, interpolation).
 struct TablesRow {

@@ -15,7 +15,7 @@ namespace spec {
 
 const char* const kVectorsUsage =
     "  vectors  test vectors from the bit-exact model for the Icarus testbench\n"
-    "           --out FILE --spans N (1..5000, default 200) --seed S --mode patent|tuned --tables K,K,...\n"
+    "           --out FILE --spans N (1..5000, default 200) --seed S --mode patent|tuned|pow --tables K,K,...\n"
     "           --config NAME (a named configuration of specrom, e.g. up5k; before --mode/--tables)\n";
 
 VectorsOptions parse_vectors(int argc, char** argv) {
@@ -48,8 +48,12 @@ std::vector<SpanRegs> vector_spans(const Model& m, uint32_t count, uint64_t seed
         r.n = (s < 1024) ? static_cast<uint32_t>((s * 37) % 1024) : static_cast<uint32_t>(rng() % 1024);
         r.c = static_cast<uint32_t>(rng() % 65536);
         r.len = static_cast<uint32_t>(rng() % 24);
+        // around the highlight; in pow mode every third span also reaches past pi/2 (the log table's side 1, where
+        // the angle nears pi/2) and every third one stays near 0 (its smallest segments)
         const double e = epicentre_end(r.n);
-        std::uniform_real_distribution<double> z(-2.0 * e - 0.1, 2.0 * e + 0.1);
+        const int kind = m.format().pow() ? int(s % 3) : 0;
+        const double reach = kind == 1 ? 1.8 : kind == 2 ? 0.002 : 2.0 * e + 0.1;
+        std::uniform_real_distribution<double> z(-reach, reach);
         r.zeta0 = m.quantize_angle(z(rng));
         r.dzeta = m.quantize_angle((z(rng) - m.angle_value(r.zeta0)) / (r.len ? r.len : 1));
         v.push_back(r);

@@ -13,7 +13,14 @@ namespace spec {
 
 const ModelResult* RenderResult::find(render::SpecModel m) const {
     for (const ModelResult& r : results) {
-        if (r.model == m) return &r;
+        if (r.model == m && !r.pow_column) return &r;
+    }
+    return nullptr;
+}
+
+const ModelResult* RenderResult::find_pow() const {
+    for (const ModelResult& r : results) {
+        if (r.pow_column) return &r;
     }
     return nullptr;
 }
@@ -60,6 +67,15 @@ RenderResult render_compute(const RenderOptions& ra, const render::Scene& sc, co
             if (m == render::SpecModel::rtl) core = make_core(ra.mode);
             r.run = render::shade_specular(sc, spec_frame, m, core.get(), ra.rgb, ra.gamma, prog, ra.mode);
         }
+        r.img = render::compose(res.base, r.run);
+        res.results.push_back(std::move(r));
+    }
+    if (res.compared && ra.mode != Mode::pow) {   // the pow column: the bit-exact model in pow mode
+        ModelResult r;
+        r.model = render::SpecModel::golden;
+        r.pow_column = true;
+        r.run = render::shade_specular(sc, res.frame, render::SpecModel::golden, nullptr, ra.rgb, ra.gamma,
+                                       render::Progress(), Mode::pow);
         r.img = render::compose(res.base, r.run);
         res.results.push_back(std::move(r));
     }
@@ -114,7 +130,7 @@ std::string render_stats_json(const RenderOptions& ra, const render::Scene& sc, 
     j << "  \"against_ref\": {\n";
     for (size_t i = 0; i < res.results.size(); ++i) {
         const auto& r = res.results[i];
-        j << "    \"" << render::model_name(r.model) << "\": {\"max_abs\": " << r.st.max_abs
+        j << "    \"" << r.name() << "\": {\"max_abs\": " << r.st.max_abs
           << ", \"mean_abs\": " << json_num(r.st.mean_abs) << ", \"psnr_db\": " << json_num(r.st.psnr)
           << ", \"pixels_over_4\": " << r.st.over_4 << ", \"pixels_differing\": " << r.st.differing
           << ", \"model_pixels\": " << r.run.core_pixels << ", \"seconds\": " << json_num(r.run.seconds) << "}"

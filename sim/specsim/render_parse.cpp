@@ -19,7 +19,8 @@ const char* const kRenderUsage =
     "                          prototype (cos^2(sqrt(n/2) zeta), Abbas et al.) | host (host angles, exact cos^n) |\n"
     "                          shader (Verilated spec_shader: span ends in, setup and core in RTL; docs/setup.md)\n"
     "           --shader-config C  ecp5 (default) | up5k: the shader's configuration (--model shader, docs/setup.md)\n"
-    "           --mode M       patent (default) | tuned: ROM 9 of the rtl and golden models (docs/tuned.md)\n"
+    "           --mode M       patent (default) | tuned | pow: the rtl and golden models' mode (docs/tuned.md,\n"
+    "                          docs/pow.md)\n"
     "           --out FILE     the rendered PNG (required)\n"
     "           --panel FILE   also render ref and prototype: PNG of ref | model | prototype | error maps\n"
     "           --stats FILE   also render ref, prototype, host: errors against ref as JSON\n"
@@ -82,7 +83,8 @@ RenderOptions parse_render(int argc, char** argv) {
             const std::string m = a.value(f);
             if (m == "patent") r.mode = Mode::patent;
             else if (m == "tuned") r.mode = Mode::tuned;
-            else throw UsageError("--mode: '" + m + "' is not patent or tuned");
+            else if (m == "pow") r.mode = Mode::pow;
+            else throw UsageError("--mode: '" + m + "' is not patent, tuned or pow");
         }
         else if (f == "--out") r.out = a.value(f);
         else if (f == "--panel") r.panel = a.value(f);

@@ -78,7 +78,8 @@ void print_summary(const RenderOptions& ra, const render::Scene& sc, const Rende
                 (unsigned long long)hc.no_highlight, (unsigned long long)hc.c_saturated,
                 (unsigned long long)hc.gamma_fallback);
     std::printf("%s%s: %llu pixels through the model in %.2f s (%.3g pixels/s)", render::model_name(main.model),
-                ra.mode == Mode::tuned ? " (tuned mode)" : "", (unsigned long long)main.run.core_pixels,
+                ra.mode == Mode::tuned ? " (tuned mode)" : ra.mode == Mode::pow ? " (pow mode)" : "",
+                (unsigned long long)main.run.core_pixels,
                 main.run.seconds, double(main.run.core_pixels) / std::max(1e-9, main.run.seconds));
     if (main.model == render::SpecModel::rtl || main.model == render::SpecModel::shader) std::printf(", %llu clock cycles", (unsigned long long)main.run.core_cycles);
     std::printf("; rasterization and diffuse %.2f s\n", res.t_raster);
@@ -87,7 +88,7 @@ void print_summary(const RenderOptions& ra, const render::Scene& sc, const Rende
     std::printf("  %-10s %8s %10s %9s %11s %10s\n", "model", "max|err|", "mean|err|", "PSNR dB", "pixels > 4",
                 "differing");
     for (const ModelResult& r : res.results) {
-        std::printf("  %-10s %8d %10.4f %9s %11llu %10llu\n", render::model_name(r.model), r.st.max_abs,
+        std::printf("  %-10s %8d %10.4f %9s %11llu %10llu\n", r.name(), r.st.max_abs,
                     r.st.mean_abs, std::isinf(r.st.psnr) ? "inf" : fmt("%.2f", r.st.psnr).c_str(),
                     (unsigned long long)r.st.over_4, (unsigned long long)r.st.differing);
     }
@@ -100,20 +101,25 @@ void print_summary(const RenderOptions& ra, const render::Scene& sc, const Rende
 void write_panel(const RenderOptions& ra, const render::Scene& sc, const RenderResult& res) {
     const ModelResult* pm = res.find(ra.model);
     const ModelResult* pp = res.find(render::SpecModel::prototype);
+    const ModelResult* pw = res.find_pow();   // the pow column (absent when the chosen mode is pow)
     const render::Image& ref = res.find(render::SpecModel::ref)->img;
     const render::Image em = render::error_map(pm->img, ref, ra.amp);
     const render::Image ep = render::error_map(pp->img, ref, ra.amp);
+    const render::Image ew = pw ? render::error_map(pw->img, ref, ra.amp) : render::Image();
     const std::string amp = fmt("%g", ra.amp);
-    const std::string mname = std::string(render::model_name(ra.model)) + (ra.mode == Mode::tuned ? " (tuned)" : "");
+    const std::string mname = std::string(render::model_name(ra.model)) +
+                              (ra.mode == Mode::tuned ? " (tuned)" : ra.mode == Mode::pow ? " (pow)" : "");
     std::vector<render::Tile> tiles{
         {&ref, "ref", "double precision"},
         {&pm->img, mname, ra.model == render::SpecModel::rtl      ? "Verilated spec_unit"
                           : ra.model == render::SpecModel::shader ? "Verilated spec_shader"
                                                                   : ""},
-        {&pp->img, "prototype", "cos^2(sqrt(n/2) d)"},
-        {&em, "error of " + mname + " x" + amp, "max " + std::to_string(pm->st.max_abs) + " levels of 255"},
-        {&ep, "error of prototype x" + amp, "max " + std::to_string(pp->st.max_abs) + " levels of 255"},
     };
+    if (pw) tiles.push_back({&pw->img, "pow", "exp2(n log2 cos), bit-exact"});
+    tiles.push_back({&pp->img, "prototype", "cos^2(sqrt(n/2) d)"});
+    tiles.push_back({&em, "error of " + mname + " x" + amp, "max " + std::to_string(pm->st.max_abs) + " levels of 255"});
+    if (pw) tiles.push_back({&ew, "error of pow x" + amp, "max " + std::to_string(pw->st.max_abs) + " levels of 255"});
+    tiles.push_back({&ep, "error of prototype x" + amp, "max " + std::to_string(pp->st.max_abs) + " levels of 255"});
     const render::Image panel = render::make_panel(
         tiles, "UA 71489 specular core: scene " + sc.name + ", " + std::to_string(ra.size) + "x" +
                    std::to_string(ra.size) +

@@ -1,4 +1,4 @@
-// tb_elab - spec_unit and spec_stream with every parameter settable (iverilog -P tb_elab.NAME=VALUE), run for a few
+// tb_elab - spec_unit and spec_stream with every parameter settable (pow mode's: POW and POW_IDX_W) (iverilog -P tb_elab.NAME=VALUE), run for a few
 // clocks: the ctests of tests/config_checks.py show that parameters against the ROM images and impossible
 // parameter combinations stop Icarus with a message, and that the right ones run ("tb_elab: ran").
 `timescale 1ns / 1ps
@@ -20,6 +20,8 @@ module tb_elab #(
     parameter DELTA_W = `SPEC_DELTA_W,
     parameter DECODER_ROM = `SPEC_DECODER_ROM,
     parameter TSEL_W = `SPEC_TSEL_W,
+    parameter POW = `SPEC_POW,
+    parameter POW_IDX_W = `SPEC_POW_IDX_W,
     parameter ROM9_FILE = `SPEC_ROM9_FILE,
     parameter ROM12_FILE = `SPEC_ROM12_FILE,
     parameter DESC_W = `SPEC_DESC_W,
@@ -37,7 +39,8 @@ module tb_elab #(
     spec_unit #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
-        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .POW_IDX_W(POW_IDX_W),
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE)
     ) u_unit (
         .clk(clk), .init_n(rst_n), .start(1'b0), .c_i({C_W{1'b0}}), .c_we(1'b0), .dzeta_i({ANG_W{1'b0}}),
         .dzeta_we(1'b0), .zeta0_i({ANG_W{1'b0}}), .zeta0_we(1'b0), .n_i({N_W{1'b0}}), .n_we(1'b0),
@@ -46,8 +49,8 @@ module tb_elab #(
     spec_stream #(
         .C_W(C_W), .ANG_W(ANG_W), .ANG_FRAC(ANG_FRAC), .N_W(N_W), .L_W(L_W), .OUT_W(OUT_W), .SCALE_W(SCALE_W),
         .SCALE_FRAC(SCALE_FRAC), .TBL_AW(TBL_AW), .TBL_FRAC(TBL_FRAC), .INTERP(INTERP), .INTERP_FRAC(INTERP_FRAC),
-        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE),
-        .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB), .DESC_N_LSB(DESC_N_LSB), .DESC_L_LSB(DESC_L_LSB),
+        .DELTA_W(DELTA_W), .DECODER_ROM(DECODER_ROM), .TSEL_W(TSEL_W), .POW(POW), .POW_IDX_W(POW_IDX_W),
+        .ROM9_FILE(ROM9_FILE), .ROM12_FILE(ROM12_FILE), .DESC_W(DESC_W), .DESC_C_LSB(DESC_C_LSB), .DESC_N_LSB(DESC_N_LSB), .DESC_L_LSB(DESC_L_LSB),
         .DESC_ZETA0_LSB(DESC_ZETA0_LSB), .DESC_DZETA_LSB(DESC_DZETA_LSB)
     ) u_stream (
         .clk(clk), .rst_n(rst_n), .s_axis_tvalid(1'b0), .s_axis_tready(s_ready), .s_axis_tdata({DESC_W{1'b0}}),
