@@ -135,6 +135,7 @@ roms: build
 	$(BUILD)/specrom --out rom --rom-path rom/
 	$(BUILD)/setuprom --out rom --config ecp5
 	$(BUILD)/setuprom --out rom --config up5k
+	$(BUILD)/setuprom --out rom/race --rom-path rom/race --format race
 
 fig8: build
 	$(BUILD)/specsim fig8

@@ -42,15 +42,10 @@ set(BOARD_VL_ARGS -Wall -Wno-fatal -I${ROM_DIR} -I${BOARD_GEN} -O3 --x-assign fa
 # The frame-buffer designs build the up5k configuration's small setup, the racing design the ecp5 configuration's
 # multiplier setup (sim/board/board_shaders.cpp: board_setup_config, the model's side) on the race machine's units:
 # setuprom --format race (II 28, where the ecp5 configuration's units take 41: a line's clocks hold K = 8's
-# sub-spans only at 28), made at build time into RACE_SETUP_DIR; its setup_params.vh comes before rom/'s on the
-# include path. The arithmetic, and so the model, is the ecp5 configuration's.
-set(RACE_SETUP_DIR ${CMAKE_BINARY_DIR}/setup_race)
-add_custom_command(OUTPUT ${RACE_SETUP_DIR}/setup_params.vh ${RACE_SETUP_DIR}/setup_ucode.hex
-    ${RACE_SETUP_DIR}/setup_efu.hex ${RACE_SETUP_DIR}/setup_exp2.hex
-  COMMAND ${CMAKE_COMMAND} -E make_directory ${RACE_SETUP_DIR}
-  COMMAND $<TARGET_FILE:setuprom> --out ${RACE_SETUP_DIR} --rom-path ${RACE_SETUP_DIR} --format race
-  DEPENDS setuprom COMMENT "setuprom --format race: the racing design's setup")
-add_custom_target(setup_race DEPENDS ${RACE_SETUP_DIR}/setup_params.vh)
+# sub-spans only at 28), committed in rom/race/ (make roms; tests/setup_rom_check.cmake), whose setup_params.vh
+# comes before rom/'s on the include path (in the build directory it would not exist when verilate() runs
+# Verilator at configure time). The arithmetic, and so the model, is the ecp5 configuration's.
+set(RACE_SETUP_DIR ${CMAKE_SOURCE_DIR}/rom/race)
 # board_verilate(target board prefix mode k setup_dir verilator-args...)
 function(board_verilate target board prefix mode k setup_dir)
   board_file_args(files ${mode} ${k} ${setup_dir})
@@ -69,7 +64,6 @@ set(BOARDSIM_SOURCES sim/board/boardsim_main.cpp sim/board/board_harness.cpp sim
 add_executable(boardsim-quick ${BOARDSIM_SOURCES})
 add_dependencies(boardsim-quick rom_up5k)
 target_link_libraries(boardsim-quick PRIVATE boardmodel Threads::Threads)
-add_dependencies(boardsim-quick setup_race)
 board_verilate(boardsim-quick icebreaker Vicebreaker_top_test 64x48 8 ${ROM_DIR} -GTEST=1)
 board_verilate(boardsim-quick ulx3s Vulx3s_top_test 64x48 8 ${ROM_DIR} -GMODE=2)
 board_verilate(boardsim-quick ulx3s Vulx3s_top_race 128x96 8 ${RACE_SETUP_DIR} -GMODE=3)
@@ -78,7 +72,6 @@ add_executable(boardsim EXCLUDE_FROM_ALL ${BOARDSIM_SOURCES})
 add_dependencies(boardsim rom_up5k)
 target_compile_definitions(boardsim PRIVATE BOARDSIM_FULL=1)
 target_link_libraries(boardsim PRIVATE boardmodel Threads::Threads)
-add_dependencies(boardsim setup_race)
 board_verilate(boardsim icebreaker Vicebreaker_top_test 64x48 8 ${ROM_DIR} -GTEST=1)
 board_verilate(boardsim ulx3s Vulx3s_top_test 64x48 8 ${ROM_DIR} -GMODE=2)
 board_verilate(boardsim ulx3s Vulx3s_top_race 128x96 8 ${RACE_SETUP_DIR} -GMODE=3)

@@ -217,14 +217,8 @@ def synthesize(board, mode, args, tools, out):
                        stdout=subprocess.DEVNULL) != 0:
         fail("specrom --config up5k failed")
     # both setups' tables and microcode are committed in rom/ (setuprom; tests/setup_rom_check.cmake); racing the
-    # beam builds the ecp5 configuration on the race machine's units (setuprom --format race, boards/boards.cmake)
-    setup_dir = "rom"
-    if d["setup_config"][mode] == "ecp5":
-        setup_dir = os.path.join(rel, "setup_race")
-        os.makedirs(os.path.join(ROOT, setup_dir), exist_ok=True)
-        if subprocess.call([args.setuprom, "--out", os.path.join(ROOT, setup_dir), "--rom-path",
-                            os.path.join(ROOT, setup_dir), "--format", "race"], stdout=subprocess.DEVNULL) != 0:
-            fail("setuprom --format race failed")
+    # beam builds the ecp5 configuration on the race machine's units (setuprom --format race, committed in rom/race/)
+    setup_dir = "rom/race" if d["setup_config"][mode] == "ecp5" else "rom"
     res = {"mode": mode, "setup_config": d["setup_config"][mode]}
     net = "%s/%s.json" % (rel, name)
     stat = "%s/%s.stat" % (rel, name)

@@ -1,5 +1,5 @@
-# Regenerates both setup configurations' tables, microcode and headers (setuprom: ecp5, up5k) and fails when a
-# committed file in rom/ differs.
+# Regenerates both setup configurations' tables, microcode and headers (setuprom: ecp5, up5k), and the race
+# machine's (setuprom --format race, rom/race/: the ULX3S racing design's), and fails when a committed file differs.
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
 foreach(cfg ecp5 up5k)
@@ -15,4 +15,16 @@ foreach(f setup_efu.hex setup_exp2.hex setup_ucode.hex setup_params.vh setup_par
     message(FATAL_ERROR "rom/${f} differs from what setuprom makes now: run 'make roms' and commit")
   endif()
   message(STATUS "rom/${f}: matches the generator")
+endforeach()
+file(MAKE_DIRECTORY ${OUT_DIR}/race)
+execute_process(COMMAND ${SETUPROM} --out ${OUT_DIR}/race --rom-path rom/race --format race RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "setuprom --format race failed (${rc})")
+endif()
+foreach(f setup_efu.hex setup_exp2.hex setup_ucode.hex setup_params.vh setup_params.h)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${ROM_DIR}/race/${f} ${OUT_DIR}/race/${f} RESULT_VARIABLE diff)
+  if(NOT diff EQUAL 0)
+    message(FATAL_ERROR "rom/race/${f} differs from what setuprom makes now: run 'make roms' and commit")
+  endif()
+  message(STATUS "rom/race/${f}: matches the generator")
 endforeach()

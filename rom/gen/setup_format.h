@@ -89,7 +89,7 @@ struct SetupFormat {
 // Named formats (docs/setup.md). "ecp5" is the ecp5 configuration's, committed in rom/ (the shader's accuracy goal,
 // issue 13's bound; units chosen so that spec_shader fits the ECP5-25F); "race" is the same format and arithmetic
 // on more units (II 28 instead of 41, bit for bit the same results), which the ULX3S's racing-the-beam design
-// builds so that a line's clocks hold K = 8's sub-spans (boards/boards.cmake makes it at build time); "narrow" is the multiplier setup at its smallest for the iCE40 UP5K (a 16-bit mantissa for its
+// builds so that a line's clocks hold K = 8's sub-spans (committed in rom/race/, make roms); "narrow" is the multiplier setup at its smallest for the iCE40 UP5K (a 16-bit mantissa for its
 // 16 x 16 DSP blocks, one unit of each kind): `make synth`'s row that shows it does not fit there, which is why
 // the up5k configuration keeps the small CORDIC setup (rom/gen/setup_small_format.h).
 inline SetupFormat setup_format_config(const std::string& name) {
