@@ -1,7 +1,7 @@
 """docgen_shader.py - scripts/docgen.py's facts and blocks for spec_setup / spec_shader (issue 13, docs/setup.md).
 
-Facts: setup_cfg.NAME (rom/setup_params.h, the ecp5 configuration's), setup_race_cfg.NAME (`setuprom --format
-race`'s setup_params.h: the racing design's machine), setup_small_cfg.NAME
+Facts: setup_cfg.NAME (rom/setup_params.h, the ecp5 configuration's), setup_race_cfg.NAME (rom/race/setup_params.h:
+the racing design's machine, setuprom --format race), setup_small_cfg.NAME
 (rom/setup_small_params.h, the up5k configuration's), render_shader.* (the default scene through the Verilated
 spec_shader: its statistics JSON), shader_latency.ecp5|up5k (`specsim shader-diagram`), setup_acc.ecp5|up5k.*
 (`specsim setup-accuracy --json`: worst, spans, widened, share, eps_log2). Blocks: setup-accuracy[-up5k],
@@ -21,20 +21,16 @@ class DocError(Exception):
     """A fact or block that cannot be made (scripts/docgen.py reports it)."""
 
 
-def setup_header(f, name="setup_params.h", fmt=None):
-    """rom/setup_params.h or rom/setup_small_params.h (setuprom), or the header setuprom --format FMT writes: a
-    setup's formats, beat layout, schedule."""
+def setup_header(f, name="setup_params.h", sub=""):
+    """rom/[SUB/]setup_params.h or rom/setup_small_params.h (setuprom; tests/setup_rom_check.cmake keeps them
+    current): a setup's formats, beat layout, schedule."""
     def make():
         vals = {}
-        d = os.path.join(ROOT, "rom")
-        if fmt:
-            d = tempfile.mkdtemp(prefix="docgen_")
-            f.run([os.path.join(f.build, "setuprom"), "--out", d, "--rom-path", d, "--format", fmt])
-        text = open(os.path.join(d, name)).read()
+        text = open(os.path.join(ROOT, "rom", sub, name)).read()
         for m in re.finditer(r"constexpr (?:long long|int) (\w+) = (-?\d+);", text):
             vals[m.group(1)] = int(m.group(2))
         return vals
-    return f.once("setup_header." + name + "." + str(fmt), make)
+    return f.once("setup_header." + os.path.join(sub, name), make)
 
 
 def render_shader(f):
@@ -74,7 +70,7 @@ def get(f, head, parts, key):
     if head == "setup_cfg":
         return setup_header(f)[parts[1]]
     if head == "setup_race_cfg":
-        return setup_header(f, fmt="race")[parts[1]]
+        return setup_header(f, sub="race")[parts[1]]
     if head == "setup_small_cfg":
         return setup_header(f, "setup_small_params.h")[parts[1]]
     if head == "setup_acc":   # setup_acc.ecp5|up5k.worst|spans|widened|share|eps_log2

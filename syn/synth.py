@@ -30,8 +30,8 @@ RUNS picks exact runs instead of the product: target:top:config:lanes,... (e.g. 
 --shader: spec_shader's configurations (issue 28, docs/setup.md) through syn/synth_wrap_shader.v: "up5k" (the
 small CORDIC setup with spec_stream_seq and spec_stream's up5k tables, for the iCE40 UP5K), "ecp5" (the
 multiplier setup with spec_stream's default configuration), "up5k-setup" and "ecp5-setup" (the setup alone),
-"ecp5-race" (the ecp5 configuration on the race machine's units, setuprom --format race: the ULX3S's racing
-design's shader), and "narrow-mul" (the multiplier setup at its smallest, one unit of each kind in the narrow format, with the
+"ecp5-race" (the ecp5 configuration on the race machine's units, rom/race/ from setuprom --format race: the
+ULX3S's racing design's shader), and "narrow-mul" (the multiplier setup at its smallest, one unit of each kind in the narrow format, with the
 up5k back end: the row that shows it does not fit the UP5K); a run whose cell counts exceed the device is not
 placed (fmax_mhz null, "pnr_skipped"). --collect gathers the result files earlier runs wrote
 in --out without running anything (e.g. after one was stopped).
@@ -69,7 +69,8 @@ GOALS.update({("ecp5-85f", l): g for (t, l), g in list(GOALS.items()) if t == "e
 FAMILY = {"ice40-up5k": "ice40", "ecp5-25f": "ecp5", "ecp5-85f": "ecp5", "xc7": "xc7"}
 TARGETS = tuple(FAMILY)
 # spec_shader's configurations (--shader): the setup (ITERATIVE: 0 the multiplier setup, 1 the small CORDIC one;
-# "format": setuprom options of a multiplier setup made for the run instead of rom/'s), the back end and
+# "format": setuprom options of a multiplier setup made for the run instead of rom/'s; "setup_dir": a committed
+# one other than rom/), the back end and
 # spec_stream's configuration, or the setup alone (SETUP_ONLY); their goals (issue 28): on the UP5K the whole
 # shader at 50 MHz and the setup alone at 62.2, on the ECP5 125 MHz
 SHADER_CONFIGS = {
@@ -77,7 +78,7 @@ SHADER_CONFIGS = {
     "up5k-setup": {"stream": "up5k", "ITERATIVE": 1, "SETUP_ONLY": 1},
     "ecp5": {"stream": "default", "ITERATIVE": 0},
     "ecp5-setup": {"stream": "default", "ITERATIVE": 0, "SETUP_ONLY": 1},
-    "ecp5-race": {"stream": "default", "ITERATIVE": 0, "format": ["--format", "race"]},
+    "ecp5-race": {"stream": "default", "ITERATIVE": 0, "setup_dir": "rom/race"},
     "narrow-mul": {"stream": "up5k", "ITERATIVE": 0, "BACKEND": 1,
                    "format": ["--format", "narrow"]},
 }
@@ -236,8 +237,8 @@ def shader_script(target, config, rom9, rom12, json_out, stat_out, setup_dir):
 def setup_files(config, out, setuprom):
     """The multiplier setup's directory for the run: rom/, or setuprom's files for the configuration's format."""
     fmt = SHADER_CONFIGS[config].get("format")
-    if not fmt:
-        return os.path.join(ROOT, "rom")
+    if not fmt:   # committed: rom/, or the race machine's rom/race/
+        return os.path.join(ROOT, SHADER_CONFIGS[config].get("setup_dir", "rom"))
     d = os.path.join(out, "setup_" + config)
     os.makedirs(d, exist_ok=True)
     rc, _ = run([setuprom, "--out", d, "--rom-path", d] + fmt, os.path.join(out, "setuprom_%s.log" % config))
